@@ -34,11 +34,13 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
   if (nv >= none || nc >= none / 2) throw InvalidArgument("build_mesh: too many elements for 32-bit handles");
   for (std::size_t i = 0; i < nv; ++i) {
     const auto& p = soup.positions[i];
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) fail_vertex(i, "coordinate is not finite");
+    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+      fail_vertex(i, "coordinate is not finite");
   }
   for (std::size_t f = 0; f < nf; ++f) {
     auto face = soup.face(f);
-    if (face.size() < 3) fail_face(f, "has " + std::to_string(face.size()) + " vertices; at least 3 are needed");
+    if (face.size() < 3)
+      fail_face(f, "has " + std::to_string(face.size()) + " vertices; at least 3 are needed");
     for (std::size_t j = 0; j < face.size(); ++j) {
       if (face[j] >= nv) {
         fail_face(f, "vertex index " + std::to_string(face[j]) + " is out of range (there are " +
@@ -76,7 +78,8 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
     const std::uint32_t first = directed.insert(a, b, k);
     if (first != k) {
       fail_face(m.corners_[k].face.index(),
-                "edge " + std::to_string(a) + "-" + std::to_string(b) + " is also used in the same direction by face " +
+                "edge " + std::to_string(a) + "-" + std::to_string(b) +
+                    " is also used in the same direction by face " +
                     std::to_string(m.corners_[first].face.index()) +
                     " (an edge of more than two faces, or faces with opposite orientation)");
     }
@@ -98,13 +101,14 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
     m.corners_[twin].edge = e;
   }
 
-  // Hole faces. The hole corner of boundary half-edge k (a -> b) sits at b and runs back to a; the hole walk goes
-  // on at a with the hole corner of the one boundary half-edge that arrives at a.
+  // Hole faces. The hole corner of boundary half-edge k (a -> b) sits at b and runs back to a; the hole walk
+  // goes on at a with the hole corner of the one boundary half-edge that arrives at a.
   if (!boundary.empty()) {
     std::vector<std::uint32_t> arriving(nv, none);  // vertex -> boundary slot of the half-edge arriving there
     for (std::uint32_t s = 0; s < boundary.size(); ++s) {
       const std::uint32_t b = target(boundary[s]);
-      if (arriving[b] != none) fail_vertex(b, "non-manifold: it lies on the boundary of more than one fan of faces");
+      if (arriving[b] != none)
+        fail_vertex(b, "non-manifold: it lies on the boundary of more than one fan of faces");
       arriving[b] = s;
     }
     const std::uint32_t hole_base = static_cast<std::uint32_t>(nc);
@@ -202,8 +206,9 @@ PolygonSoup MeshBuilder::polygons(const Mesh& m) {
   for (FaceId f : m.faces()) {
     if (m.is_hole(f) || m.size(f) == 1) continue;
     if (m.size(f) == 2) {
-      throw TopologyError("to_polygons: " + to_string(f) +
-                          " has 2 corners; an indexed polygon file cannot hold it (use the native JSON format)");
+      throw TopologyError(
+          "to_polygons: " + to_string(f) +
+          " has 2 corners; an indexed polygon file cannot hold it (use the native JSON format)");
     }
     for (CornerId c : m.corners(f)) soup.indices.push_back(index[m.vertex(c).index()]);
     soup.offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));

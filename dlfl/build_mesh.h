@@ -9,8 +9,9 @@
 
 namespace dlfl {
 
-/// A polygon soup that is not an orientable 2-manifold (with or without boundary). `element()` says whether the
-/// problem is at a face or a vertex of the input and `index()` which one, so readers can point at a file line.
+/// A polygon soup that is not an orientable 2-manifold (with or without boundary). `element()` says whether
+/// the problem is at a face or a vertex of the input and `index()` which one, so readers can point at a file
+/// line.
 class PolygonError : public TopologyError {
  public:
   enum class Element { vertex, face };
@@ -26,19 +27,20 @@ class PolygonError : public TopologyError {
 
 /// Builds the DLFL of a polygon soup in O(size), pairing half-edges through a hash map of directed edges.
 ///
-/// Handles are predictable: vertex i of the soup is VertexId(i), face i is FaceId(i), and the corner of the j-th
-/// vertex of face i is CornerId(offsets[i] + j). Each boundary loop then becomes a hole face (appended after the
-/// soup's faces), and each vertex that no face uses becomes a point sphere. An edge's side 0 is its corner with
-/// the smaller handle.
+/// Handles are predictable: vertex i of the soup is VertexId(i), face i is FaceId(i), and the corner of the
+/// j-th vertex of face i is CornerId(offsets[i] + j). Each boundary loop then becomes a hole face (appended
+/// after the soup's faces), and each vertex that no face uses becomes a point sphere. An edge's side 0 is its
+/// corner with the smaller handle.
 ///
-/// Throws PolygonError for: a non-finite position, a face with fewer than 3 vertices, an index out of range, a
-/// vertex used twice in a row, a directed edge used twice (an edge shared by more than two faces, or two faces
-/// with opposite orientation), and a non-manifold vertex (its faces form more than one fan).
+/// Throws PolygonError for: a non-finite position, a face with fewer than 3 vertices, an index out of range,
+/// a vertex used twice in a row, a directed edge used twice (an edge shared by more than two faces, or two
+/// faces with opposite orientation), and a non-manifold vertex (its faces form more than one fan).
 Mesh build_mesh(const PolygonSoup& soup);
 
-/// The polygons of a mesh for writing: live vertices in handle order (renumbered densely), and every live face
-/// that is neither a hole nor a point sphere. Throws TopologyError if a face has 2 corners or two edges join the
-/// same two vertices: an indexed polygon list cannot represent those (save in the native JSON format instead).
+/// The polygons of a mesh for writing: live vertices in handle order (renumbered densely), and every live
+/// face that is neither a hole nor a point sphere. Throws TopologyError if a face has 2 corners or two edges
+/// join the same two vertices: an indexed polygon list cannot represent those (save in the native JSON format
+/// instead).
 PolygonSoup to_polygons(const Mesh& mesh);
 
 }  // namespace dlfl

@@ -6,8 +6,9 @@
 
 namespace dlfl {
 
-FaceManifold create_face_manifold(Mesh& mesh, std::span<const glm::dvec3> positions, std::span<VertexId> vertices,
-                                  std::span<CornerId> front_corners, std::span<CornerId> back_corners) {
+FaceManifold create_face_manifold(Mesh& mesh, std::span<const glm::dvec3> positions,
+                                  std::span<VertexId> vertices, std::span<CornerId> front_corners,
+                                  std::span<CornerId> back_corners) {
   const std::size_t n = positions.size();
   if (n < 2) throw InvalidArgument("create_face_manifold: needs at least 2 points, got " + std::to_string(n));
   for (std::size_t i = 0; i < n; ++i) {
@@ -17,7 +18,8 @@ FaceManifold create_face_manifold(Mesh& mesh, std::span<const glm::dvec3> positi
     }
   }
   for (std::size_t s : {vertices.size(), front_corners.size(), back_corners.size()}) {
-    if (s != 0 && s != n) throw InvalidArgument("create_face_manifold: an output span does not have one slot per point");
+    if (s != 0 && s != n)
+      throw InvalidArgument("create_face_manifold: an output span does not have one slot per point");
   }
 
   // (a) one point sphere per point. Corner p_i is v_i's point-sphere corner.
@@ -28,10 +30,10 @@ FaceManifold create_face_manifold(Mesh& mesh, std::span<const glm::dvec3> positi
     VertexId v = mesh.create_vertex(positions[i]);
     if (!vertices.empty()) vertices[i] = v;
   }
-  // create_vertex appends one corner each, so p_i = base + i. Each p_i is v_i's only corner until the next step
-  // (vertices of valence below 2 need no corner choice, as the paper remarks).
-  // (b) the edges. insert_edge(p_i, p_{i+1}) puts a new corner at v_i (leaving towards v_{i+1}) unless p_i is
-  // still a point sphere, and reuses p_{i+1} (a point sphere) as the corner leaving v_{i+1} towards v_i.
+  // create_vertex appends one corner each, so p_i = base + i. Each p_i is v_i's only corner until the next
+  // step (vertices of valence below 2 need no corner choice, as the paper remarks). (b) the edges.
+  // insert_edge(p_i, p_{i+1}) puts a new corner at v_i (leaving towards v_{i+1}) unless p_i is still a point
+  // sphere, and reuses p_{i+1} (a point sphere) as the corner leaving v_{i+1} towards v_i.
   for (std::size_t i = 0; i + 1 < n; ++i) {
     InsertEdgeResult r = mesh.insert_edge(sphere_corner(i), sphere_corner(i + 1));
     if (!front_corners.empty()) front_corners[i] = mesh.corner(r.edge, 0);

@@ -8,8 +8,8 @@
 
 namespace dlfl {
 
-/// The two faces of a face manifold. The front face runs v_0, v_1, ..., v_{N-1} from its first corner; the back
-/// face runs v_{N-1}, ..., v_1, v_0 from its first corner.
+/// The two faces of a face manifold. The front face runs v_0, v_1, ..., v_{N-1} from its first corner; the
+/// back face runs v_{N-1}, ..., v_1, v_0 from its first corner.
 struct FaceManifold {
   FaceId front;
   FaceId back;

@@ -58,8 +58,8 @@ DeleteEdgeResult Mesh::delete_edge(EdgeId e, const Reuse& reuse) {
     return result;
   }
 
-  // Split (inverse of a merge). Part U continues at u (x1 .. p0), part W at w (x0 .. p1). An end vertex with no
-  // other edge (next(s1) == s0) becomes a point sphere that keeps its corner.
+  // Split (inverse of a merge). Part U continues at u (x1 .. p0), part W at w (x0 .. p1). An end vertex with
+  // no other edge (next(s1) == s0) becomes a point sphere that keeps its corner.
   const FaceId f = f0;
   const bool dangling_u = x1 == s0;
   const bool dangling_w = x0 == s1;
@@ -125,6 +125,9 @@ DeleteEdgeResult Mesh::delete_edge(EdgeId e, const Reuse& reuse) {
   if (!dangling_w) kill(s1);
   kill(e);
   result.created_face = g;
+  // A corner kept for a point sphere is not created again by the inverse.
+  if (dangling_u) inverse.reuse.corners[0] = CornerId();
+  if (dangling_w) inverse.reuse.corners[1] = CornerId();
   inverse.corner1 = start_u;
   inverse.corner2 = start_w;
   apply_anchors(reuse);

@@ -1,6 +1,6 @@
 #pragma once
-// A flat open-addressing hash map from a directed vertex pair to a 32-bit value: the O(1) lookup behind building
-// a DLFL from polygons. Internal to the library.
+// A flat open-addressing hash map from a directed vertex pair to a 32-bit value: the O(1) lookup behind
+// building a DLFL from polygons. Internal to the library.
 
 #include <cstdint>
 #include <vector>

@@ -1,6 +1,6 @@
 #pragma once
-// The exception hierarchy of the library. Every precondition violation throws one of these, with a message that
-// names the offending element, file or field.
+// The exception hierarchy of the library. Every precondition violation throws one of these, with a message
+// that names the offending element, file or field.
 
 #include <cstddef>
 #include <stdexcept>
@@ -27,8 +27,8 @@ class TopologyError : public Error {
   using Error::Error;
 };
 
-/// Reading or writing a file failed, or its content is malformed. `file()` and `line()` locate the problem when
-/// known (`line() == 0` when no line applies, as in binary files).
+/// Reading or writing a file failed, or its content is malformed. `file()` and `line()` locate the problem
+/// when known (`line() == 0` when no line applies, as in binary files).
 class IoError : public Error {
  public:
   IoError(const std::string& message, std::string file = {}, std::size_t line = 0);

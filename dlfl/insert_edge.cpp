@@ -1,5 +1,5 @@
-// INSERTEDGE: the one operator that both splits faces and changes topology. See Mesh::insert_edge in mesh.h for
-// the conventions (which corners stay, which face keeps its handle).
+// INSERTEDGE: the one operator that both splits faces and changes topology. See Mesh::insert_edge in mesh.h
+// for the conventions (which corners stay, which face keeps its handle).
 
 #include "dlfl/errors.h"
 #include "dlfl/mesh.h"
@@ -18,19 +18,21 @@ InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const Reuse& reuse)
   const VertexId u = vertex(c1);
   const VertexId w = vertex(c2);
   if (u == w) {
-    throw TopologyError("insert_edge: " + to_string(c1) + " and " + to_string(c2) + " are both at " + to_string(u) +
-                        "; the edge would be a self-loop");
+    throw TopologyError("insert_edge: " + to_string(c1) + " and " + to_string(c2) + " are both at " +
+                        to_string(u) + "; the edge would be a self-loop");
   }
-  if (!reusable(*this, reuse.corners[0], corner_capacity()) || !reusable(*this, reuse.corners[1], corner_capacity()) ||
-      !reusable(*this, reuse.edge, edge_capacity()) || !reusable(*this, reuse.face, face_capacity()) ||
-      (reuse.corners[0].valid() && reuse.corners[0] == reuse.corners[1])) {
-    throw InvalidArgument("insert_edge: a handle to reuse is not a removed element");
-  }
-
   const FaceId f1 = face(c1);
   const FaceId f2 = face(c2);
   const bool sphere1 = !edge(c1).valid();  // a point sphere's corner becomes the new edge's corner itself
   const bool sphere2 = !edge(c2).valid();
+  // Only the handles this call will create are checked (a point sphere's corner is not created).
+  const CornerId reuse1 = sphere1 ? CornerId() : reuse.corners[0];
+  const CornerId reuse2 = sphere2 ? CornerId() : reuse.corners[1];
+  if (!reusable(*this, reuse1, corner_capacity()) || !reusable(*this, reuse2, corner_capacity()) ||
+      !reusable(*this, reuse.edge, edge_capacity()) ||
+      (f1 == f2 && !reusable(*this, reuse.face, face_capacity())) || (reuse1.valid() && reuse1 == reuse2)) {
+    throw InvalidArgument("insert_edge: a handle to reuse is not a removed element");
+  }
   const CornerId a = prev(c1);
   const CornerId b = prev(c2);
 
@@ -40,7 +42,8 @@ InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const Reuse& reuse)
   inverse.reuse.face_anchors = {{{f1, first_corner(f1)}, {f2, first_corner(f2)}}};
   inverse.reuse.vertex_anchors = {{{u, corner(u)}, {w, corner(w)}}};
 
-  // In a split, measure the two parts before relinking: part A = c2 .. a, part B = c1 .. b (original corners).
+  // In a split, measure the two parts before relinking: part A = c2 .. a, part B = c1 .. b (original
+  // corners).
   std::uint32_t length_a = 0, length_b = 0;
   if (f1 == f2) {
     CornerId x = c1, y = c2;
@@ -60,8 +63,8 @@ InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const Reuse& reuse)
     }
   }
 
-  const CornerId n1 = sphere1 ? c1 : new_corner(reuse.corners[0]);
-  const CornerId n2 = sphere2 ? c2 : new_corner(reuse.corners[1]);
+  const CornerId n1 = sphere1 ? c1 : new_corner(reuse1);
+  const CornerId n2 = sphere2 ? c2 : new_corner(reuse2);
   const EdgeId e = new_edge(reuse.edge);
   corners_[n1.index()].vertex = u;
   corners_[n1.index()].edge = e;

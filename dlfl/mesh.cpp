@@ -43,7 +43,8 @@ void Mesh::require(CornerId c, const char* op) const {
   if (!is_alive(c)) throw InvalidArgument(missing(op, c));
 }
 
-// ---- allocation: append, or bring back a removed element named by a Reuse ----------------------------------
+// ---- allocation: append, or bring back a removed element named by a Reuse
+// ----------------------------------
 
 CornerId Mesh::new_corner(CornerId reuse) {
   ++live_corners_;
@@ -96,10 +97,11 @@ void Mesh::kill(VertexId v) {
 }
 
 void Mesh::apply_anchors(const Reuse& reuse) {
-  // Anchors that no longer fit (the element is gone, or the corner is elsewhere) are ignored: they only choose
-  // where iteration starts, never the topology.
+  // Anchors that no longer fit (the element is gone, or the corner is elsewhere) are ignored: they only
+  // choose where iteration starts, never the topology.
   for (const auto& a : reuse.face_anchors) {
-    if (is_alive(a.face) && is_alive(a.corner) && face(a.corner) == a.face) faces_[a.face.index()].corner = a.corner;
+    if (is_alive(a.face) && is_alive(a.corner) && face(a.corner) == a.face)
+      faces_[a.face.index()].corner = a.corner;
   }
   for (const auto& a : reuse.vertex_anchors) {
     if (is_alive(a.vertex) && is_alive(a.corner) && vertex(a.corner) == a.vertex) {
@@ -116,18 +118,21 @@ void Mesh::relabel(CornerId start, FaceId f) {
   } while (c != start);
 }
 
-// ---- simple mutators ---------------------------------------------------------------------------------------
+// ---- simple mutators
+// ---------------------------------------------------------------------------------------
 
 void Mesh::set_position(VertexId v, const glm::dvec3& position) {
   require(v, "set_position");
-  if (!finite(position)) throw InvalidArgument("set_position: position of " + to_string(v) + " is not finite");
+  if (!finite(position))
+    throw InvalidArgument("set_position: position of " + to_string(v) + " is not finite");
   positions_[v.index()] = position;
 }
 
 void Mesh::set_first_corner(FaceId f, CornerId c) {
   require(f, "set_first_corner");
   require(c, "set_first_corner");
-  if (face(c) != f) throw InvalidArgument("set_first_corner: " + to_string(c) + " is not a corner of " + to_string(f));
+  if (face(c) != f)
+    throw InvalidArgument("set_first_corner: " + to_string(c) + " is not a corner of " + to_string(f));
   faces_[f.index()].corner = c;
 }
 
@@ -145,13 +150,15 @@ void Mesh::set_hole(FaceId f, bool hole) {
   faces_[f.index()].hole = hole;
 }
 
-// ---- CREATEVERTEX and its inverse --------------------------------------------------------------------------
+// ---- CREATEVERTEX and its inverse
+// --------------------------------------------------------------------------
 
 VertexId Mesh::create_vertex(const glm::dvec3& position, const Reuse& reuse) {
   if (!finite(position)) throw InvalidArgument("create_vertex: position is not finite");
   if ((reuse.vertex.valid() && (reuse.vertex.index() >= vertex_capacity() || is_alive(reuse.vertex))) ||
       (reuse.face.valid() && (reuse.face.index() >= face_capacity() || is_alive(reuse.face))) ||
-      (reuse.corners[0].valid() && (reuse.corners[0].index() >= corner_capacity() || is_alive(reuse.corners[0])))) {
+      (reuse.corners[0].valid() &&
+       (reuse.corners[0].index() >= corner_capacity() || is_alive(reuse.corners[0])))) {
     throw InvalidArgument("create_vertex: a handle to reuse is not a removed element");
   }
   VertexId v = new_vertex(reuse.vertex);
@@ -179,7 +186,8 @@ void Mesh::delete_vertex(VertexId v, const Reuse& reuse) {
   apply_anchors(reuse);
 }
 
-// ---- dispatch ----------------------------------------------------------------------------------------------
+// ---- dispatch
+// ----------------------------------------------------------------------------------------------
 
 Step Mesh::apply(const Step& step) {
   Step inverse;
@@ -202,8 +210,10 @@ Step Mesh::apply(const Step& step) {
       delete_vertex(step.vertex, step.reuse);
       return inverse;
     }
-    case Step::Kind::insert_edge: return insert_edge(step.corner1, step.corner2, step.reuse).inverse;
-    case Step::Kind::delete_edge: return delete_edge(step.edge, step.reuse).inverse;
+    case Step::Kind::insert_edge:
+      return insert_edge(step.corner1, step.corner2, step.reuse).inverse;
+    case Step::Kind::delete_edge:
+      return delete_edge(step.edge, step.reuse).inverse;
     case Step::Kind::subdivide_edge: {
       VertexId v = subdivide_edge(step.edge, step.position, step.reuse);
       inverse.kind = Step::Kind::unsubdivide_edge;
@@ -244,7 +254,8 @@ Step Mesh::apply(const Step& step) {
   throw InvalidArgument("apply: unknown step kind");
 }
 
-// ---- compaction and equality -------------------------------------------------------------------------------
+// ---- compaction and equality
+// -------------------------------------------------------------------------------
 
 Mesh::CompactMap Mesh::compact() {
   CompactMap map;
@@ -288,8 +299,9 @@ Mesh::CompactMap Mesh::compact() {
   new_corners.reserve(live_corners_);
   for (CornerId c : corners()) {
     const auto& r = corners_[c.index()];
-    new_corners.push_back({map.vertices[r.vertex.index()], map.faces[r.face.index()], map.corners[r.next.index()],
-                       map.corners[r.prev.index()], mapped(map.edges, r.edge)});
+    new_corners.push_back({map.vertices[r.vertex.index()], map.faces[r.face.index()],
+                           map.corners[r.next.index()], map.corners[r.prev.index()],
+                           mapped(map.edges, r.edge)});
   }
   positions_ = std::move(positions);
   vertex_corner_ = std::move(vertex_corner);
@@ -300,8 +312,8 @@ Mesh::CompactMap Mesh::compact() {
 }
 
 bool operator==(const Mesh& a, const Mesh& b) {
-  if (a.num_vertices() != b.num_vertices() || a.num_edges() != b.num_edges() || a.num_faces() != b.num_faces() ||
-      a.num_corners() != b.num_corners()) {
+  if (a.num_vertices() != b.num_vertices() || a.num_edges() != b.num_edges() ||
+      a.num_faces() != b.num_faces() || a.num_corners() != b.num_corners()) {
     return false;
   }
   // Live sets must match handle by handle; a removed element equals a missing one.
@@ -321,7 +333,8 @@ bool operator==(const Mesh& a, const Mesh& b) {
   }
   for (VertexId v : a.vertices()) {
     // Bit-for-bit: 0.0 and -0.0 differ, and a NaN would equal itself.
-    if (std::memcmp(&a.positions_[v.index()], &b.positions_[v.index()], sizeof(glm::dvec3)) != 0) return false;
+    if (std::memcmp(&a.positions_[v.index()], &b.positions_[v.index()], sizeof(glm::dvec3)) != 0)
+      return false;
     if (a.vertex_corner_[v.index()] != b.vertex_corner_[v.index()]) return false;
   }
   for (EdgeId e : a.edges()) {
@@ -335,7 +348,8 @@ bool operator==(const Mesh& a, const Mesh& b) {
   for (CornerId c : a.corners()) {
     const auto& x = a.corners_[c.index()];
     const auto& y = b.corners_[c.index()];
-    if (x.vertex != y.vertex || x.face != y.face || x.next != y.next || x.prev != y.prev || x.edge != y.edge) {
+    if (x.vertex != y.vertex || x.face != y.face || x.next != y.next || x.prev != y.prev ||
+        x.edge != y.edge) {
       return false;
     }
   }

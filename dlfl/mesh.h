@@ -1,6 +1,7 @@
 #pragma once
-// The Doubly Linked Face List (DLFL): a closed, orientable 2-manifold mesh stored as faces that are circular doubly
-// linked lists of corners. See docs/kernel.md for the model, the handle rules and the operator conventions.
+// The Doubly Linked Face List (DLFL): a closed, orientable 2-manifold mesh stored as faces that are circular
+// doubly linked lists of corners. See docs/kernel.md for the model, the handle rules and the operator
+// conventions.
 
 #include <array>
 #include <cstddef>
@@ -13,9 +14,9 @@
 namespace dlfl {
 
 /// Handles of removed elements that an operator brings back instead of appending new ones, plus "anchors" (a
-/// face's first corner, a vertex's representative corner) to set when it finishes. This is how the inverse of an
-/// operator restores a mesh with the very same handles; every operator returns a `Step` whose `reuse` is filled
-/// in that way. Unset (invalid) fields mean "append new elements" and "no anchor to set".
+/// face's first corner, a vertex's representative corner) to set when it finishes. This is how the inverse of
+/// an operator restores a mesh with the very same handles; every operator returns a `Step` whose `reuse` is
+/// filled in that way. Unset (invalid) fields mean "append new elements" and "no anchor to set".
 struct Reuse {
   /// Corners to bring back, in the order the operator documents.
   std::array<CornerId, 2> corners{};
@@ -58,10 +59,10 @@ struct Step {
 
 /// What `insert_edge` did. `split()` tells which of the two cases happened.
 struct InsertEdgeResult {
-  EdgeId edge;           ///< the new edge; its side 0 starts at vertex(c1), its side 1 at vertex(c2)
-  FaceId created_face;   ///< split: the new face (the smaller part); invalid on a merge
-  FaceId removed_face;   ///< merge: the face that was absorbed (now removed); invalid on a split
-  Step inverse;          ///< applying this restores the mesh exactly
+  EdgeId edge;          ///< the new edge; its side 0 starts at vertex(c1), its side 1 at vertex(c2)
+  FaceId created_face;  ///< split: the new face (the smaller part); invalid on a merge
+  FaceId removed_face;  ///< merge: the face that was absorbed (now removed); invalid on a split
+  Step inverse;         ///< applying this restores the mesh exactly
   bool split() const { return created_face.valid(); }
 };
 
@@ -74,18 +75,19 @@ struct DeleteEdgeResult {
 
 /// A closed orientable 2-manifold in DLFL form.
 ///
-/// Storage is contiguous arrays addressed by 32-bit handles. Removing an element leaves a tombstone: handles of
-/// live elements never change and are never reused until `compact()`. New elements are appended in a fixed order,
-/// so the same operations always give the same handles.
+/// Storage is contiguous arrays addressed by 32-bit handles. Removing an element leaves a tombstone: handles
+/// of live elements never change and are never reused until `compact()`. New elements are appended in a fixed
+/// order, so the same operations always give the same handles.
 ///
 /// Element accessors (`vertex(c)`, `next(c)`, ...) do not check their argument: it must be a live handle (see
-/// `is_alive`). Every operator checks its preconditions and throws `InvalidArgument` or `TopologyError`, leaving
-/// the mesh unchanged.
+/// `is_alive`). Every operator checks its preconditions and throws `InvalidArgument` or `TopologyError`,
+/// leaving the mesh unchanged.
 class Mesh {
  public:
   Mesh() = default;
 
-  // ---- sizes -------------------------------------------------------------------------------------------------
+  // ---- sizes
+  // -------------------------------------------------------------------------------------------------
 
   std::size_t num_vertices() const { return live_vertices_; }
   std::size_t num_edges() const { return live_edges_; }
@@ -102,15 +104,21 @@ class Mesh {
   /// Reserve room for this many elements of each type in total (live plus removed), to avoid regrowth.
   void reserve(std::size_t vertices, std::size_t edges, std::size_t faces, std::size_t corners);
 
-  // ---- liveness ----------------------------------------------------------------------------------------------
+  // ---- liveness
+  // ----------------------------------------------------------------------------------------------
 
   /// True for a handle that was assigned and whose element has not been removed. Safe on any handle.
-  bool is_alive(VertexId v) const { return v.index() < vertex_capacity() && vertex_corner_[v.index()].valid(); }
+  bool is_alive(VertexId v) const {
+    return v.index() < vertex_capacity() && vertex_corner_[v.index()].valid();
+  }
   bool is_alive(EdgeId e) const { return e.index() < edge_capacity() && edges_[e.index()].corner[0].valid(); }
   bool is_alive(FaceId f) const { return f.index() < face_capacity() && faces_[f.index()].alive; }
-  bool is_alive(CornerId c) const { return c.index() < corner_capacity() && corners_[c.index()].vertex.valid(); }
+  bool is_alive(CornerId c) const {
+    return c.index() < corner_capacity() && corners_[c.index()].vertex.valid();
+  }
 
-  // ---- element data ------------------------------------------------------------------------------------------
+  // ---- element data
+  // ------------------------------------------------------------------------------------------
 
   const glm::dvec3& position(VertexId v) const { return positions_[v.index()]; }
   /// A representative corner of the vertex (its only corner for a point sphere). Rotation starts here.
@@ -121,8 +129,8 @@ class Mesh {
   /// The next corner along the face (counter-clockwise seen from outside).
   CornerId next(CornerId c) const { return corners_[c.index()].next; }
   CornerId prev(CornerId c) const { return corners_[c.index()].prev; }
-  /// The edge that leaves the corner along its face, from vertex(c) to vertex(next(c)). Invalid for the corner of
-  /// a point sphere.
+  /// The edge that leaves the corner along its face, from vertex(c) to vertex(next(c)). Invalid for the
+  /// corner of a point sphere.
   EdgeId edge(CornerId c) const { return corners_[c.index()].edge; }
 
   /// The corner of edge `e` on side 0 or 1: the corner where the edge starts on that side. Side 0 runs from
@@ -136,7 +144,8 @@ class Mesh {
   /// Hole faces stand for the boundary loops of an open mesh; writers omit them.
   bool is_hole(FaceId f) const { return faces_[f.index()].hole; }
 
-  // ---- navigation, O(1) per step ----------------------------------------------------------------------------
+  // ---- navigation, O(1) per step
+  // ----------------------------------------------------------------------------
 
   /// The corner on the other side of edge(c): it starts at vertex(next(c)) and ends at vertex(c).
   CornerId opposite(CornerId c) const {
@@ -154,13 +163,14 @@ class Mesh {
   /// The faces on side 0 and side 1 of an edge (equal when the edge has the same face on both sides).
   FaceId face(EdgeId e, int side) const { return face(corner(e, side)); }
 
-  /// Number of edges at the vertex, counting an edge twice if both its ends are here (never, as self-loops are
-  /// not allowed). 0 for a point sphere. O(valence).
+  /// Number of edges at the vertex, counting an edge twice if both its ends are here (never, as self-loops
+  /// are not allowed). 0 for a point sphere. O(valence).
   std::uint32_t valence(VertexId v) const;
   /// A vertex with no edge: its only face has one corner.
   bool is_point_sphere(VertexId v) const { return !edge(corner(v)).valid(); }
 
-  // ---- iteration ---------------------------------------------------------------------------------------------
+  // ---- iteration
+  // ---------------------------------------------------------------------------------------------
 
   template <class H>
   class LiveRange;
@@ -177,19 +187,20 @@ class Mesh {
   /// The corners at a vertex, from its representative corner along `next_around_vertex`.
   VertexCorners corners(VertexId v) const;
 
-  // ---- Euler operators ---------------------------------------------------------------------------------------
+  // ---- Euler operators
+  // ---------------------------------------------------------------------------------------
 
   /// CREATEVERTEX (MVFS): a new point sphere, one vertex with one face of one corner and no edge. The vertex,
   /// face and corner are appended (or brought back from `reuse.vertex`, `reuse.face`, `reuse.corners[0]`).
   /// Throws InvalidArgument on a non-finite position.
   VertexId create_vertex(const glm::dvec3& position, const Reuse& reuse = {});
 
-  /// Inverse of `create_vertex`: removes a point sphere (vertex, face, corner). Throws TopologyError if the vertex
-  /// has edges.
+  /// Inverse of `create_vertex`: removes a point sphere (vertex, face, corner). Throws TopologyError if the
+  /// vertex has edges.
   void delete_vertex(VertexId v, const Reuse& reuse = {});
 
-  /// INSERTEDGE: a new edge from vertex(c1) to vertex(c2), drawn inside the angle of corner c1 and the angle of
-  /// corner c2.
+  /// INSERTEDGE: a new edge from vertex(c1) to vertex(c2), drawn inside the angle of corner c1 and the angle
+  /// of corner c2.
   ///
   /// - Same face: the face is split in two. The part that contains c1 is c1, next(c1), ..., up to the corner
   ///   before c2, plus a new corner at vertex(c2); the other part contains c2.
@@ -201,10 +212,11 @@ class Mesh {
   ///   corner n1 = corner(e,0), placed just before c2 along the face; and vertex(c2) from a new corner
   ///   n2 = corner(e,1), placed just before c1. A point sphere's corner is not duplicated: if c1 (c2) is the
   ///   corner of a point sphere, n1 = c1 (n2 = c2).
-  /// - Split: the larger part keeps the face handle, the smaller part gets a new face (on a tie the part of c1
-  ///   keeps it). The new face copies the hole flag. Merge: the larger face survives (on a tie the face of c1)
-  ///   and the other is removed. A face's first corner stays unless it moved to the other part; then it becomes
-  ///   c1 or c2, whichever lies in the face.
+  /// - Split: the larger part keeps the face handle, the smaller part gets a new face (on a tie the part of
+  /// c1
+  ///   keeps it). The new face copies the hole flag. Merge: the larger face survives (on a tie the face of
+  ///   c1) and the other is removed. A face's first corner stays unless it moved to the other part; then it
+  ///   becomes c1 or c2, whichever lies in the face.
   /// - New handles are appended in the order n1, n2, edge, face (or taken from `reuse.corners`, `reuse.edge`,
   ///   `reuse.face`).
   ///
@@ -212,22 +224,24 @@ class Mesh {
   /// TopologyError if both corners are at the same vertex (a self-loop).
   InsertEdgeResult insert_edge(CornerId c1, CornerId c2, const Reuse& reuse = {});
 
-  /// DELETEEDGE, the inverse of `insert_edge`. If the edge has different faces on its two sides they merge into
-  /// one (the larger survives; on a tie face(corner(e,1))). If it has the same face on both sides that face splits
-  /// in two (the larger part keeps the handle; on a tie the part continuing at from(e)), which may separate a
-  /// component or lower the genus; an end vertex left with no edge becomes a point sphere, keeping its corner.
-  /// Cost O(1) plus the size of the smaller face involved.
+  /// DELETEEDGE, the inverse of `insert_edge`. If the edge has different faces on its two sides they merge
+  /// into one (the larger survives; on a tie face(corner(e,1))). If it has the same face on both sides that
+  /// face splits in two (the larger part keeps the handle; on a tie the part continuing at from(e)), which
+  /// may separate a component or lower the genus; an end vertex left with no edge becomes a point sphere,
+  /// keeping its corner. Cost O(1) plus the size of the smaller face involved.
   DeleteEdgeResult delete_edge(EdgeId e, const Reuse& reuse = {});
 
-  /// Puts a new vertex at `position` on edge e. Edge e keeps running from from(e) to the new vertex, a new edge
-  /// runs from the new vertex to the old to(e); both faces grow by one corner. Appends, in order: the vertex,
-  /// corner on side 0, corner on side 1, edge (or takes them from `reuse`). O(1). Returns the new vertex.
+  /// Puts a new vertex at `position` on edge e. Edge e keeps running from from(e) to the new vertex, a new
+  /// edge runs from the new vertex to the old to(e); both faces grow by one corner. Appends, in order: the
+  /// vertex, corner on side 0, corner on side 1, edge (or takes them from `reuse`). O(1). Returns the new
+  /// vertex.
   VertexId subdivide_edge(EdgeId e, const glm::dvec3& position, const Reuse& reuse = {});
 
-  /// Inverse of `subdivide_edge`: removes a vertex of valence 2 and joins its two edges into one. The two edges
-  /// must continue each other the way `subdivide_edge` leaves them: one arrives at v on its side 0 (it is kept,
-  /// now running to the far end of the other), the other leaves v on its side 0 (it is removed). Throws
-  /// TopologyError otherwise, or if both neighbours are the same vertex (the result would be a self-loop).
+  /// Inverse of `subdivide_edge`: removes a vertex of valence 2 and joins its two edges into one. The two
+  /// edges must continue each other the way `subdivide_edge` leaves them: one arrives at v on its side 0 (it
+  /// is kept, now running to the far end of the other), the other leaves v on its side 0 (it is removed).
+  /// Throws TopologyError otherwise, or if both neighbours are the same vertex (the result would be a
+  /// self-loop).
   void unsubdivide_edge(VertexId v, const Reuse& reuse = {});
 
   /// Moves a vertex. Throws InvalidArgument on a non-finite position.
@@ -236,7 +250,8 @@ class Mesh {
   /// Runs one operator given as a value and returns its exact inverse (`apply(apply(s))` restores the mesh).
   Step apply(const Step& step);
 
-  // ---- anchors and flags (no effect on topology) -------------------------------------------------------------
+  // ---- anchors and flags (no effect on topology)
+  // -------------------------------------------------------------
 
   /// Makes c the corner where iteration around its face starts.
   void set_first_corner(FaceId f, CornerId c);
@@ -244,7 +259,8 @@ class Mesh {
   void set_vertex_corner(VertexId v, CornerId c);
   void set_hole(FaceId f, bool hole);
 
-  // ---- maintenance -------------------------------------------------------------------------------------------
+  // ---- maintenance
+  // -------------------------------------------------------------------------------------------
 
   /// Old-to-new handle maps returned by `compact` (invalid for removed elements).
   struct CompactMap {
@@ -279,6 +295,7 @@ class Mesh {
   };
 
   friend class MeshBuilder;
+  friend struct MeshTestAccess;  // lets the test suite corrupt a mesh to prove the validator catches it
 
   void require(VertexId v, const char* op) const;
   void require(EdgeId e, const char* op) const;
@@ -313,7 +330,8 @@ class Mesh {
   std::size_t live_corners_ = 0;
 };
 
-// ---- ranges --------------------------------------------------------------------------------------------------
+// ---- ranges
+// --------------------------------------------------------------------------------------------------
 
 template <class H>
 class Mesh::LiveRange {
@@ -323,7 +341,8 @@ class Mesh::LiveRange {
     using value_type = H;
     using difference_type = std::ptrdiff_t;
     iterator() = default;
-    iterator(const Mesh* mesh, std::uint32_t index, std::uint32_t end) : mesh_(mesh), index_(index), end_(end) {
+    iterator(const Mesh* mesh, std::uint32_t index, std::uint32_t end)
+        : mesh_(mesh), index_(index), end_(end) {
       skip();
     }
     H operator*() const { return H(index_); }

@@ -9,8 +9,8 @@
 
 namespace dlfl {
 
-/// Positions plus faces given as vertex indices (counter-clockwise seen from outside), stored flat: face i uses
-/// `indices[offsets[i] .. offsets[i+1])`.
+/// Positions plus faces given as vertex indices (counter-clockwise seen from outside), stored flat: face i
+/// uses `indices[offsets[i] .. offsets[i+1])`.
 struct PolygonSoup {
   std::vector<glm::dvec3> positions;
   std::vector<std::uint32_t> offsets{0};

@@ -17,8 +17,10 @@ VertexId Mesh::subdivide_edge(EdgeId e, const glm::dvec3& position, const Reuse&
   };
   if (!reusable(is_alive(reuse.vertex), reuse.vertex.index(), vertex_capacity(), reuse.vertex.valid()) ||
       !reusable(is_alive(reuse.edge), reuse.edge.index(), edge_capacity(), reuse.edge.valid()) ||
-      !reusable(is_alive(reuse.corners[0]), reuse.corners[0].index(), corner_capacity(), reuse.corners[0].valid()) ||
-      !reusable(is_alive(reuse.corners[1]), reuse.corners[1].index(), corner_capacity(), reuse.corners[1].valid()) ||
+      !reusable(is_alive(reuse.corners[0]), reuse.corners[0].index(), corner_capacity(),
+                reuse.corners[0].valid()) ||
+      !reusable(is_alive(reuse.corners[1]), reuse.corners[1].index(), corner_capacity(),
+                reuse.corners[1].valid()) ||
       (reuse.corners[0].valid() && reuse.corners[0] == reuse.corners[1])) {
     throw InvalidArgument("subdivide_edge: a handle to reuse is not a removed element");
   }
@@ -60,8 +62,9 @@ void Mesh::unsubdivide_edge(VertexId v, const Reuse& reuse) {
   const bool a_leaves = corner(edge(a), 0) == a;
   const bool b_leaves = corner(edge(b), 0) == b;
   if (a_leaves == b_leaves) {
-    throw TopologyError("unsubdivide_edge: the edges at " + to_string(v) + " do not continue each other (both " +
-                        (a_leaves ? "start" : "end") + " there on side 0)");
+    throw TopologyError("unsubdivide_edge: the edges at " + to_string(v) +
+                        " do not continue each other (both " + (a_leaves ? "start" : "end") +
+                        " there on side 0)");
   }
   const CornerId d0 = a_leaves ? a : b;
   const CornerId d1 = a_leaves ? b : a;
@@ -70,8 +73,8 @@ void Mesh::unsubdivide_edge(VertexId v, const Reuse& reuse) {
   const CornerId s0 = corner(kept, 0);  // at the far end u of the kept edge
   const CornerId s1 = corner(gone, 1);  // at the far end w of the removed edge
   if (vertex(s0) == vertex(s1)) {
-    throw TopologyError("unsubdivide_edge: both neighbours of " + to_string(v) + " are " + to_string(vertex(s0)) +
-                        "; the joined edge would be a self-loop");
+    throw TopologyError("unsubdivide_edge: both neighbours of " + to_string(v) + " are " +
+                        to_string(vertex(s0)) + "; the joined edge would be a self-loop");
   }
   link(s0, next(d0));
   link(s1, next(d1));

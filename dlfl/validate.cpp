@@ -6,17 +6,28 @@ namespace dlfl {
 
 const char* to_string(ViolationCode code) {
   switch (code) {
-    case ViolationCode::removed_reference: return "removed_reference";
-    case ViolationCode::next_prev: return "next_prev";
-    case ViolationCode::corner_face: return "corner_face";
-    case ViolationCode::face_size: return "face_size";
-    case ViolationCode::edge_corner: return "edge_corner";
-    case ViolationCode::edge_sides: return "edge_sides";
-    case ViolationCode::vertex_corner: return "vertex_corner";
-    case ViolationCode::pinched_vertex: return "pinched_vertex";
-    case ViolationCode::point_sphere: return "point_sphere";
-    case ViolationCode::counts: return "counts";
-    case ViolationCode::euler_characteristic: return "euler_characteristic";
+    case ViolationCode::removed_reference:
+      return "removed_reference";
+    case ViolationCode::next_prev:
+      return "next_prev";
+    case ViolationCode::corner_face:
+      return "corner_face";
+    case ViolationCode::face_size:
+      return "face_size";
+    case ViolationCode::edge_corner:
+      return "edge_corner";
+    case ViolationCode::edge_sides:
+      return "edge_sides";
+    case ViolationCode::vertex_corner:
+      return "vertex_corner";
+    case ViolationCode::pinched_vertex:
+      return "pinched_vertex";
+    case ViolationCode::point_sphere:
+      return "point_sphere";
+    case ViolationCode::counts:
+      return "counts";
+    case ViolationCode::euler_characteristic:
+      return "euler_characteristic";
   }
   return "unknown";
 }
@@ -33,7 +44,8 @@ class Checker {
   }
   void report_named(ViolationCode code, std::string element, std::string message) {
     ++report_.violation_count;
-    if (report_.violations.size() < max_) report_.violations.push_back({code, std::move(element), std::move(message)});
+    if (report_.violations.size() < max_)
+      report_.violations.push_back({code, std::move(element), std::move(message)});
   }
 
   ValidationReport run() {
@@ -59,7 +71,8 @@ class Checker {
         report(ViolationCode::removed_reference, c, "corner refers to a removed element");
         continue;
       }
-      if (m_.prev(n) != c || m_.next(p) != c) report(ViolationCode::next_prev, c, "next/prev links are not mutual");
+      if (m_.prev(n) != c || m_.next(p) != c)
+        report(ViolationCode::next_prev, c, "next/prev links are not mutual");
       if (m_.face(n) != f) report(ViolationCode::corner_face, c, "next corner belongs to another face");
       if (e.valid()) {
         if (m_.corner(e, 0) != c && m_.corner(e, 1) != c) {
@@ -81,7 +94,8 @@ class Checker {
         continue;
       }
       if (m_.face(first) != f) {
-        report(ViolationCode::corner_face, f, "first corner " + to_string(first) + " belongs to another face");
+        report(ViolationCode::corner_face, f,
+               "first corner " + to_string(first) + " belongs to another face");
         continue;
       }
       // Walk at most size+1 steps so a broken cycle cannot loop forever.
@@ -93,8 +107,9 @@ class Checker {
         ++steps;
       } while (c != first && steps <= limit && m_.is_alive(c));
       if (c != first || steps != m_.size(f)) {
-        report(ViolationCode::face_size, f,
-               "stores size " + std::to_string(m_.size(f)) + " but its corner cycle does not have that length");
+        report(
+            ViolationCode::face_size, f,
+            "stores size " + std::to_string(m_.size(f)) + " but its corner cycle does not have that length");
       }
       total += m_.size(f);
     }
@@ -210,8 +225,7 @@ class Checker {
     }
     for (std::size_t i = 0; i < out.size(); ++i) {
       auto& info = out[i];
-      info.euler_characteristic =
-          long(info.vertices) - long(info.edges) + long(info.faces);
+      info.euler_characteristic = long(info.vertices) - long(info.edges) + long(info.faces);
       info.genus = (2 - info.euler_characteristic) / 2;
       if (info.euler_characteristic > 2 || info.euler_characteristic % 2 != 0) {
         report_named(ViolationCode::euler_characteristic, "component " + std::to_string(i),

@@ -1,6 +1,6 @@
 #pragma once
-// The consistency checker: proves that a mesh is a valid closed orientable 2-manifold in DLFL form, and reports
-// the topology of each connected component.
+// The consistency checker: proves that a mesh is a valid closed orientable 2-manifold in DLFL form, and
+// reports the topology of each connected component.
 
 #include <cstddef>
 #include <cstdint>
@@ -15,16 +15,16 @@ namespace dlfl {
 enum class ViolationCode : std::uint8_t {
   removed_reference,  ///< a live element refers to a removed or never-created one
   next_prev,          ///< next(prev(c)) != c or prev(next(c)) != c
-  corner_face,        ///< consecutive corners of a cycle belong to different faces, or a face's first corner is
-                      ///< not its own
-  face_size,          ///< the cycle from a face's first corner does not have size(f) corners
-  edge_corner,        ///< an edge and its side corners disagree (edge(c) != e, or the other side does not start
-                      ///< at the next vertex)
-  edge_sides,         ///< an edge does not have exactly two distinct sides, or is a self-loop
-  vertex_corner,      ///< a vertex's representative corner is not at that vertex
-  pinched_vertex,     ///< the corners at a vertex form more than one rotation cycle (a non-manifold vertex)
-  point_sphere,       ///< a corner without an edge that is not a well-formed point sphere
-  counts,             ///< the live counts the mesh keeps differ from the elements actually present
+  corner_face,     ///< consecutive corners of a cycle belong to different faces, or a face's first corner is
+                   ///< not its own
+  face_size,       ///< the cycle from a face's first corner does not have size(f) corners
+  edge_corner,     ///< an edge and its side corners disagree (edge(c) != e, or the other side does not start
+                   ///< at the next vertex)
+  edge_sides,      ///< an edge does not have exactly two distinct sides, or is a self-loop
+  vertex_corner,   ///< a vertex's representative corner is not at that vertex
+  pinched_vertex,  ///< the corners at a vertex form more than one rotation cycle (a non-manifold vertex)
+  point_sphere,    ///< a corner without an edge that is not a well-formed point sphere
+  counts,          ///< the live counts the mesh keeps differ from the elements actually present
   euler_characteristic,  ///< a component has odd or greater-than-2 Euler characteristic
 };
 
