@@ -1,5 +1,6 @@
 #include "dlfl/build_mesh.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "dlfl/edge_map.h"
@@ -41,16 +42,14 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
     auto face = soup.face(f);
     if (face.size() < 3)
       fail_face(f, "has " + std::to_string(face.size()) + " vertices; at least 3 are needed");
-    for (std::size_t j = 0; j < face.size(); ++j) {
-      if (face[j] >= nv) {
-        fail_face(f, "vertex index " + std::to_string(face[j]) + " is out of range (there are " +
+    std::uint32_t previous = face.back();
+    for (std::uint32_t k : face) {
+      if (k >= nv) {
+        fail_face(f, "vertex index " + std::to_string(k) + " is out of range (there are " +
                          std::to_string(nv) + " vertices)");
       }
-    }
-    for (std::size_t j = 0; j < face.size(); ++j) {
-      if (face[j] == face[(j + 1) % face.size()]) {
-        fail_face(f, "uses vertex " + std::to_string(face[j]) + " twice in a row");
-      }
+      if (k == previous) fail_face(f, "uses vertex " + std::to_string(k) + " twice in a row");
+      previous = k;
     }
   }
 
@@ -71,8 +70,11 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
   }
   auto target = [&](std::uint32_t k) { return m.corners_[m.corners_[k].next.index()].vertex.index(); };
 
-  // Directed edges: one entry each; a second use of the same direction is an error.
-  detail::EdgeMap directed(nc);
+  // Directed edges: one entry each; a second use of the same direction is an error. A vertex has as many
+  // outgoing half-edges as corners.
+  std::vector<std::uint32_t> corners_at(nv, 0);
+  for (std::uint32_t k : soup.indices) ++corners_at[k];
+  detail::EdgeMap directed(corners_at);
   for (std::uint32_t k = 0; k < nc; ++k) {
     const std::uint32_t a = m.corners_[k].vertex.index(), b = target(k);
     const std::uint32_t first = directed.insert(a, b, k);
@@ -149,8 +151,9 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
     auto& anchor = m.vertex_corner_[m.corners_[k].vertex.index()];
     if (!anchor.valid()) anchor = CornerId(k);
   }
-  std::vector<std::uint32_t> corners_at(nv, 0);
-  for (const auto& c : m.corners_) ++corners_at[c.vertex.index()];
+  for (std::uint32_t k = static_cast<std::uint32_t>(nc); k < m.corners_.size(); ++k) {
+    ++corners_at[m.corners_[k].vertex.index()];  // hole corners
+  }
   for (std::uint32_t v = 0; v < nv; ++v) {
     if (m.vertex_corner_[v].valid()) continue;
     const CornerId c(static_cast<std::uint32_t>(m.corners_.size()));
@@ -190,8 +193,11 @@ PolygonSoup MeshBuilder::polygons(const Mesh& m) {
     index[v.index()] = static_cast<std::uint32_t>(soup.positions.size());
     soup.positions.push_back(m.position(v));
   }
-  // Two edges between one pair of vertices would turn into one directed edge used twice.
-  detail::EdgeMap pairs(m.num_edges());
+  // Two edges between one pair of vertices would turn into one directed edge used twice. Key: (lower,
+  // higher).
+  std::vector<std::uint32_t> lower_degree(m.vertex_capacity(), 0);
+  for (EdgeId e : m.edges()) ++lower_degree[std::min(m.from(e).index(), m.to(e).index())];
+  detail::EdgeMap pairs(lower_degree);
   for (EdgeId e : m.edges()) {
     std::uint32_t a = m.from(e).index(), b = m.to(e).index();
     if (a > b) std::swap(a, b);

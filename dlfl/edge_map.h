@@ -1,8 +1,12 @@
 #pragma once
-// A flat open-addressing hash map from a directed vertex pair to a 32-bit value: the O(1) lookup behind
-// building a DLFL from polygons. Internal to the library.
+// A hash map of directed edges (a -> b) to a 32-bit value, bucketed by the source vertex: each vertex owns a
+// small open-addressing table sized from its out-degree, all in one flat array. Lookups stay O(1) expected
+// whatever the valence, and probes touch one or two cache lines near the vertex's neighbours, which is what
+// makes building a million-face DLFL fast. Internal to the library.
 
+#include <bit>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 namespace dlfl::detail {
@@ -11,22 +15,26 @@ class EdgeMap {
  public:
   static constexpr std::uint32_t none = 0xFFFFFFFFu;
 
-  explicit EdgeMap(std::size_t expected) {
-    std::size_t capacity = 16;
-    while (capacity < expected * 2) capacity *= 2;
-    keys_.assign(capacity, empty_key);
-    values_.resize(capacity);
-    mask_ = capacity - 1;
+  /// `out_degree[a]` bounds the number of keys (a, *) that will be inserted.
+  explicit EdgeMap(std::span<const std::uint32_t> out_degree) : start_(out_degree.size() + 1) {
+    std::size_t total = 0;
+    for (std::size_t a = 0; a < out_degree.size(); ++a) {
+      start_[a] = total;
+      // Load factor at most one half; a power of two so the probe can wrap with a mask.
+      total += out_degree[a] == 0 ? 0 : std::bit_ceil(2 * std::size_t(out_degree[a]));
+    }
+    start_.back() = total;
+    slots_.assign(total, Slot{none, none});
   }
 
   /// Inserts (a,b) -> value unless (a,b) is present; returns the value stored for (a,b) afterwards.
   std::uint32_t insert(std::uint32_t a, std::uint32_t b, std::uint32_t value) {
-    const std::uint64_t key = pack(a, b);
-    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
-      if (keys_[i] == key) return values_[i];
-      if (keys_[i] == empty_key) {
-        keys_[i] = key;
-        values_[i] = value;
+    Slot* region = slots_.data() + start_[a];
+    const std::size_t mask = start_[a + 1] - start_[a] - 1;
+    for (std::size_t i = spread(b) & mask;; i = (i + 1) & mask) {
+      if (region[i].target == b) return region[i].value;
+      if (region[i].target == none) {
+        region[i] = {b, value};
         return value;
       }
     }
@@ -34,24 +42,25 @@ class EdgeMap {
 
   /// The value stored for (a,b), or `none`.
   std::uint32_t find(std::uint32_t a, std::uint32_t b) const {
-    const std::uint64_t key = pack(a, b);
-    for (std::size_t i = slot(key);; i = (i + 1) & mask_) {
-      if (keys_[i] == key) return values_[i];
-      if (keys_[i] == empty_key) return none;
+    const std::size_t size = start_[a + 1] - start_[a];
+    if (size == 0) return none;
+    const Slot* region = slots_.data() + start_[a];
+    const std::size_t mask = size - 1;
+    for (std::size_t i = spread(b) & mask;; i = (i + 1) & mask) {
+      if (region[i].target == b) return region[i].value;
+      if (region[i].target == none) return none;
     }
   }
 
  private:
-  static constexpr std::uint64_t empty_key = ~std::uint64_t(0);
-  static std::uint64_t pack(std::uint32_t a, std::uint32_t b) { return (std::uint64_t(a) << 32) | b; }
-  std::size_t slot(std::uint64_t key) const {
-    // Fibonacci hashing spreads the packed pairs; the high bits are the best mixed.
-    return static_cast<std::size_t>((key * 0x9E3779B97F4A7C15ull) >> 32) & mask_;
-  }
+  struct Slot {
+    std::uint32_t target;
+    std::uint32_t value;
+  };
+  static std::size_t spread(std::uint32_t b) { return (std::uint64_t(b) * 0x9E3779B97F4A7C15ull) >> 40; }
 
-  std::vector<std::uint64_t> keys_;
-  std::vector<std::uint32_t> values_;
-  std::size_t mask_ = 0;
+  std::vector<std::size_t> start_;
+  std::vector<Slot> slots_;
 };
 
 }  // namespace dlfl::detail

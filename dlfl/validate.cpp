@@ -52,7 +52,7 @@ class Checker {
     check_corners();
     check_faces();
     check_edges();
-    check_vertices();
+    if (report_.valid()) check_vertices();  // rotation needs sound corners and edges
     check_counts();
     if (report_.valid()) components();
     return std::move(report_);
@@ -60,7 +60,9 @@ class Checker {
 
  private:
   void check_corners() {
+    corners_at_.assign(m_.vertex_capacity(), 0);
     for (CornerId c : m_.corners()) {
+      ++live_corners_;
       const VertexId v = m_.vertex(c);
       const FaceId f = m_.face(c);
       const CornerId n = m_.next(c);
@@ -71,6 +73,7 @@ class Checker {
         report(ViolationCode::removed_reference, c, "corner refers to a removed element");
         continue;
       }
+      ++corners_at_[v.index()];
       if (m_.prev(n) != c || m_.next(p) != c)
         report(ViolationCode::next_prev, c, "next/prev links are not mutual");
       if (m_.face(n) != f) report(ViolationCode::corner_face, c, "next corner belongs to another face");
@@ -79,8 +82,11 @@ class Checker {
           report(ViolationCode::edge_corner, c, "its edge " + to_string(e) + " does not list it as a side");
         }
         if (n == c) report(ViolationCode::point_sphere, c, "a corner with an edge is its own next");
-      } else if (n != c || p != c || m_.size(f) != 1) {
-        report(ViolationCode::point_sphere, c, "corner without an edge is not the only corner of its face");
+      } else {
+        ++point_spheres_;
+        if (n != c || p != c || m_.size(f) != 1) {
+          report(ViolationCode::point_sphere, c, "corner without an edge is not the only corner of its face");
+        }
       }
     }
   }
@@ -88,6 +94,7 @@ class Checker {
   void check_faces() {
     std::size_t total = 0;
     for (FaceId f : m_.faces()) {
+      ++live_faces_;
       const CornerId first = m_.first_corner(f);
       if (!m_.is_alive(first)) {
         report(ViolationCode::removed_reference, f, "first corner " + to_string(first) + " does not exist");
@@ -113,15 +120,16 @@ class Checker {
       }
       total += m_.size(f);
     }
-    if (total != m_.num_corners()) {
+    if (total != live_corners_) {
       report_named(ViolationCode::face_size, "mesh",
                    "face sizes add up to " + std::to_string(total) + " but there are " +
-                       std::to_string(m_.num_corners()) + " corners (a corner is off its face's cycle)");
+                       std::to_string(live_corners_) + " corners (a corner is off its face's cycle)");
     }
   }
 
   void check_edges() {
     for (EdgeId e : m_.edges()) {
+      ++live_edges_;
       const CornerId a = m_.corner(e, 0);
       const CornerId b = m_.corner(e, 1);
       if (!m_.is_alive(a) || !m_.is_alive(b)) {
@@ -145,11 +153,6 @@ class Checker {
   }
 
   void check_vertices() {
-    corners_at_.assign(m_.vertex_capacity(), 0);
-    for (CornerId c : m_.corners()) {
-      if (m_.is_alive(m_.vertex(c))) ++corners_at_[m_.vertex(c).index()];
-    }
-    if (report_.violation_count > 0) return;  // rotation needs sound corners and edges
     for (VertexId v : m_.vertices()) {
       const CornerId first = m_.corner(v);
       if (!m_.is_alive(first) || m_.vertex(first) != v) {
@@ -171,24 +174,15 @@ class Checker {
   }
 
   void check_counts() {
-    auto count = [](auto range) {
-      std::size_t n = 0;
-      for ([[maybe_unused]] auto h : range) ++n;
-      return n;
-    };
-    if (count(m_.vertices()) != m_.num_vertices() || count(m_.edges()) != m_.num_edges() ||
-        count(m_.faces()) != m_.num_faces() || count(m_.corners()) != m_.num_corners()) {
+    std::size_t live_vertices = 0;
+    for ([[maybe_unused]] VertexId v : m_.vertices()) ++live_vertices;
+    if (live_vertices != m_.num_vertices() || live_edges_ != m_.num_edges() ||
+        live_faces_ != m_.num_faces() || live_corners_ != m_.num_corners()) {
       report_named(ViolationCode::counts, "mesh", "live element counts are out of date");
     }
-    if (2 * m_.num_edges() + point_spheres() != m_.num_corners()) {
+    if (2 * live_edges_ + point_spheres_ != live_corners_) {
       report_named(ViolationCode::counts, "mesh", "corners != 2 * edges + point spheres");
     }
-  }
-
-  std::size_t point_spheres() const {
-    std::size_t n = 0;
-    for (CornerId c : m_.corners()) n += !m_.edge(c).valid();
-    return n;
   }
 
   std::uint32_t find(std::uint32_t x) {
@@ -207,19 +201,22 @@ class Checker {
       std::uint32_t b = find(m_.to(e).index());
       if (a != b) parent_[std::max(a, b)] = std::min(a, b);  // the root is the smallest vertex
     }
-    std::vector<std::uint32_t> slot(m_.vertex_capacity(), 0xFFFFFFFFu);
+    // Dense component numbers in order of each component's smallest vertex; reuse parent_ as the map.
     auto& out = report_.components;
+    std::vector<std::uint32_t>& component = corners_at_;  // no longer needed: holds vertex -> component
     for (VertexId v : m_.vertices()) {
-      std::uint32_t r = find(v.index());
-      if (slot[r] == 0xFFFFFFFFu) {
-        slot[r] = static_cast<std::uint32_t>(out.size());
+      const std::uint32_t r = find(v.index());
+      if (r == v.index()) {
+        component[r] = static_cast<std::uint32_t>(out.size());
         out.emplace_back();
+      } else {
+        component[v.index()] = component[r];
       }
-      ++out[slot[r]].vertices;
+      ++out[component[v.index()]].vertices;
     }
-    for (EdgeId e : m_.edges()) ++out[slot[find(m_.from(e).index())]].edges;
+    for (EdgeId e : m_.edges()) ++out[component[m_.from(e).index()]].edges;
     for (FaceId f : m_.faces()) {
-      auto& info = out[slot[find(m_.vertex(m_.first_corner(f)).index())]];
+      auto& info = out[component[m_.vertex(m_.first_corner(f)).index()]];
       ++info.faces;
       info.holes += m_.is_hole(f);
     }
@@ -240,6 +237,7 @@ class Checker {
   ValidationReport report_;
   std::vector<std::uint32_t> corners_at_;
   std::vector<std::uint32_t> parent_;
+  std::size_t live_corners_ = 0, live_faces_ = 0, live_edges_ = 0, point_spheres_ = 0;
 };
 
 }  // namespace

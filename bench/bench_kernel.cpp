@@ -1,0 +1,69 @@
+// Kernel benchmark: a closed quad mesh (a torus grid) of about 1M faces, built, validated, written and read.
+// Usage: dlfl_bench_kernel [faces=1000000] [runs=5] [folder for temporary files=/tmp]
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <string>
+
+#include "bench_util.h"
+#include "dlfl/build_mesh.h"
+#include "dlfl/validate.h"
+#include "io/mesh_io.h"
+
+using namespace dlfl;
+
+namespace {
+PolygonSoup torus(int n, int m) {
+  PolygonSoup s;
+  s.positions.reserve(std::size_t(n) * m);
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < m; ++j) {
+      const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / m;
+      s.positions.push_back(
+          {(2 + 0.5 * std::cos(v)) * std::cos(u), (2 + 0.5 * std::cos(v)) * std::sin(u), 0.5 * std::sin(v)});
+    }
+  }
+  s.indices.reserve(4 * std::size_t(n) * m);
+  s.offsets.reserve(std::size_t(n) * m + 1);
+  auto id = [&](int i, int j) { return std::uint32_t((i % n) * m + (j % m)); };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < m; ++j) {
+      const std::uint32_t q[4] = {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)};
+      s.indices.insert(s.indices.end(), q, q + 4);
+      s.offsets.push_back(static_cast<std::uint32_t>(s.indices.size()));
+    }
+  }
+  return s;
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  const long faces = argc > 1 ? std::stol(argv[1]) : 1000000;
+  const int runs = argc > 2 ? std::stoi(argv[2]) : 5;
+  const std::filesystem::path dir = argc > 3 ? argv[3] : std::filesystem::temp_directory_path();
+  const int side = int(std::lround(std::sqrt(double(faces))));
+  std::printf("closed quad torus %d x %d = %d faces, median of %d runs\n", side, side, side * side, runs);
+
+  PolygonSoup soup;
+  bench::row("generate polygon soup", bench::median_seconds(runs, [&] { soup = torus(side, side); }));
+  Mesh mesh;
+  const double build = bench::median_seconds(runs, [&] { mesh = build_mesh(soup); });
+  bench::row("build DLFL (build_mesh)", build);
+  bool valid = false;
+  const double check = bench::median_seconds(runs, [&] { valid = validate(mesh).valid(); });
+  bench::row("validate", check, valid ? "valid" : "INVALID");
+  bench::row("build + validate", build + check);
+
+  for (const char* ext : {".obj", ".ply"}) {
+    const auto path = dir / (std::string("dlfl_bench_kernel") + ext);
+    bench::row(std::string("write ") + ext, bench::median_seconds(runs, [&] { write_mesh(mesh, path); }),
+               std::to_string(std::filesystem::file_size(path) >> 20) + " MiB");
+    Mesh back;
+    bench::row(std::string("read ") + ext, bench::median_seconds(runs, [&] { back = read_mesh(path); }),
+               back.num_faces() == mesh.num_faces() ? "" : "FACE COUNT DIFFERS");
+    std::filesystem::remove(path);
+  }
+  return valid ? 0 : 1;
+}

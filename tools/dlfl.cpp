@@ -1,0 +1,42 @@
+// dlfl: inspect, check and convert DLFL meshes. Errors print one line "error: ..." on stderr; exit 2 for
+// usage errors, 1 for everything else.
+
+#include <exception>
+#include <iostream>
+#include <map>
+
+#include "commands.h"
+
+int main(int argc, char** argv) {
+  using namespace dlfl::tool;
+  CLI::App app{"dlfl: topological modelling on the Doubly Linked Face List"};
+  app.require_subcommand(1);
+  std::map<const CLI::App*, Action> actions;
+  auto add = [&](Action (*adder)(CLI::App&)) {
+    Action a = adder(app);
+    actions[app.get_subcommands({}).back()] = std::move(a);
+  };
+  add(add_info);
+  add(add_check);
+  add(add_convert);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp&) {
+    std::cout << app.help();
+    return ok;
+  } catch (const CLI::CallForAllHelp&) {
+    std::cout << app.help("", CLI::AppFormatMode::All);
+    return ok;
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return usage;
+  }
+  try {
+    for (const CLI::App* sub : app.get_subcommands()) return actions.at(sub)();
+  } catch (const std::exception& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return failure;
+  }
+  return usage;
+}
