@@ -11,7 +11,7 @@
 
 using namespace dlfl;
 
-TEST_CASE("face manifold: counts, orders and corners for N = 2..12") {
+TEST_CASE("face manifold: counts and orders and corners for N = 2..12") {
   for (std::size_t n = 2; n <= 12; ++n) {
     CAPTURE(n);
     Mesh m;

@@ -94,7 +94,7 @@ TEST_CASE("kernel: insert_edge between two point spheres gives one edge on one f
   require_valid(m);
 }
 
-TEST_CASE("kernel: insert_edge inside a face splits it; the larger part keeps the handle") {
+TEST_CASE("kernel: insert_edge inside a face splits it and the larger part keeps the handle") {
   Mesh m = test::cube();
   const Mesh before = m;
   // Face 0 is (0, 2, 3, 1): a diagonal from vertex 0 to vertex 3 gives two triangles.
@@ -213,7 +213,7 @@ TEST_CASE("kernel: insert_edge from a point sphere makes a dangling edge") {
   CHECK(m == before);
 }
 
-TEST_CASE("kernel: insert_edge rejects self-loops and removed corners, leaving the mesh unchanged") {
+TEST_CASE("kernel: insert_edge rejects self-loops and removed corners and leaves the mesh unchanged") {
   Mesh m = test::cube();
   const Mesh before = m;
   CornerId c = m.first_corner(FaceId(0));
@@ -272,7 +272,7 @@ TEST_CASE("kernel: subdivide_edge adds a 2-valent vertex and grows both faces") 
   CHECK_THROWS_AS(m.subdivide_edge(e, {1, INFINITY, 0}), InvalidArgument);
 }
 
-TEST_CASE("kernel: navigation around faces, vertices and across edges") {
+TEST_CASE("kernel: navigation around faces and vertices and across edges") {
   Mesh m = test::cube();
   for (VertexId v : m.vertices()) {
     CHECK(m.valence(v) == 3);

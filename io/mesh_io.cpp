@@ -1,0 +1,83 @@
+#include "io/mesh_io.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <fstream>
+#include <system_error>
+
+#include "dlfl/build_mesh.h"
+#include "dlfl/errors.h"
+#include "io/atomic_file.h"
+#include "io/io_detail.h"
+
+namespace dlfl {
+
+MeshFormat format_for_path(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext == ".obj") return MeshFormat::obj;
+  if (ext == ".off") return MeshFormat::off;
+  if (ext == ".ply") return MeshFormat::ply;
+  if (ext.empty()) throw IoError("no file extension; expected .obj, .off or .ply", path.string());
+  throw IoError(
+      "unknown mesh file extension '" + path.extension().string() + "'; expected .obj, .off or .ply",
+      path.string());
+}
+
+Mesh build_mesh(const ParsedPolygons& parsed, const std::string& name) {
+  try {
+    return dlfl::build_mesh(parsed.soup);
+  } catch (const PolygonError& e) {
+    const auto& lines = e.element() == PolygonError::Element::face ? parsed.face_lines : parsed.vertex_lines;
+    throw IoError(e.what(), name, e.index() < lines.size() ? lines[e.index()] : 0);
+  } catch (const InvalidArgument& e) {
+    // Only a soup too large for 32-bit handles gets here, as the parsers check everything else.
+    throw IoError(e.what(), name);
+  }
+}
+
+Mesh read_mesh(const std::filesystem::path& path) {
+  const MeshFormat format = format_for_path(path);
+  const std::string name = path.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw IoError("cannot open: it is a directory", name);
+  std::ifstream in(path, std::ios::in | std::ios::binary);
+  if (!in) throw IoError("cannot open: " + std::generic_category().message(errno), name);
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  const std::string text = io_detail::read_all(in, name, ec ? 0 : static_cast<std::size_t>(size));
+  switch (format) {
+    case MeshFormat::obj:
+      return build_mesh(io_detail::parse_obj_text(text, name), name);
+    case MeshFormat::off:
+      return build_mesh(io_detail::parse_off_text(text, name), name);
+    case MeshFormat::ply:
+      break;
+  }
+  return build_mesh(io_detail::parse_ply_text(text, name), name);
+}
+
+void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {
+  const MeshFormat format = format_for_path(path);
+  // Converting first means a mesh that an indexed polygon file cannot hold fails before any file is touched.
+  const PolygonSoup soup = to_polygons(mesh);
+  const bool binary = format == MeshFormat::ply && options.binary_ply;
+  write_atomically(
+      path,
+      [&](std::ostream& out) {
+        switch (format) {
+          case MeshFormat::obj:
+            write_obj(out, soup);
+            break;
+          case MeshFormat::off:
+            write_off(out, soup);
+            break;
+          case MeshFormat::ply:
+            write_ply(out, soup, binary);
+            break;
+        }
+      },
+      binary);
+}
+
+}  // namespace dlfl

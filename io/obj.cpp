@@ -1,0 +1,97 @@
+// Wavefront OBJ: `v` and `f` statements; everything else is skipped.
+
+#include <istream>
+
+#include "io/io_detail.h"
+#include "io/mesh_io.h"
+
+namespace dlfl {
+
+namespace io_detail {
+
+ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
+  ParsedPolygons parsed;
+  PolygonSoup& soup = parsed.soup;
+  LineScanner s(text, name, true);
+  while (s.next_line()) {
+    const std::string_view keyword = s.token();
+    if (keyword == "v") {
+      // A 4th value (w) or vertex colours may follow x y z; they are ignored.
+      glm::dvec3 p;
+      p.x = s.number("x coordinate");
+      p.y = s.number("y coordinate");
+      p.z = s.number("z coordinate");
+      soup.positions.push_back(p);
+      parsed.vertex_lines.push_back(s.line());
+    } else if (keyword == "f") {
+      // Negative indices count back from the vertices read so far; positive ones are checked after the whole
+      // file, so that a face may name a vertex defined further down.
+      const auto defined = static_cast<std::int64_t>(soup.positions.size());
+      std::size_t count = 0;
+      while (!s.at_eol()) {
+        const std::int64_t i = s.integer("vertex index", '/');
+        std::int64_t index = 0;
+        if (i > 0) {
+          index = i - 1;
+          if (index >= static_cast<std::int64_t>(max_indices))
+            s.fail("vertex index " + std::to_string(i) + " is out of range");
+        } else if (i < 0) {
+          index = defined + i;
+          if (index < 0) {
+            s.fail("relative vertex index " + std::to_string(i) + " is out of range (" +
+                   std::to_string(defined) + " vertices so far)");
+          }
+        } else {
+          s.fail("vertex index 0 is out of range (OBJ indices start at 1)");
+        }
+        soup.indices.push_back(static_cast<std::uint32_t>(index));
+        ++count;
+      }
+      if (count < 3) s.fail("face has " + std::to_string(count) + " vertices; at least 3 are needed");
+      if (soup.indices.size() > max_indices) s.fail("too many face vertices");
+      soup.offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+      parsed.face_lines.push_back(s.line());
+    }
+  }
+  const std::size_t nv = soup.positions.size();
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    for (std::uint32_t i : soup.face(f)) {
+      if (i >= nv) {
+        throw IoError("vertex index " + std::to_string(std::uint64_t{i} + 1) +
+                          " is out of range (there are " + std::to_string(nv) + " vertices)",
+                      name, parsed.face_lines[f]);
+      }
+    }
+  }
+  return parsed;
+}
+
+}  // namespace io_detail
+
+ParsedPolygons parse_obj(std::istream& in, const std::string& name) {
+  return io_detail::parse_obj_text(io_detail::read_all(in, name), name);
+}
+
+void write_obj(std::ostream& out, const PolygonSoup& soup) {
+  io_detail::BlockWriter w(out);
+  for (const glm::dvec3& p : soup.positions) {
+    w.text("v ");
+    w.number(p.x);
+    w.put(' ');
+    w.number(p.y);
+    w.put(' ');
+    w.number(p.z);
+    w.put('\n');
+  }
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    w.put('f');
+    for (std::uint32_t i : soup.face(f)) {
+      w.put(' ');
+      w.number(std::uint64_t{i} + 1);
+    }
+    w.put('\n');
+  }
+  w.flush();
+}
+
+}  // namespace dlfl
