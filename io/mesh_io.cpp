@@ -10,6 +10,7 @@
 #include "dlfl/errors.h"
 #include "io/atomic_file.h"
 #include "io/io_detail.h"
+#include "io/json_mesh.h"
 
 namespace dlfl {
 
@@ -19,9 +20,10 @@ MeshFormat format_for_path(const std::filesystem::path& path) {
   if (ext == ".obj") return MeshFormat::obj;
   if (ext == ".off") return MeshFormat::off;
   if (ext == ".ply") return MeshFormat::ply;
-  if (ext.empty()) throw IoError("no file extension; expected .obj, .off or .ply", path.string());
+  if (ext == ".json") return MeshFormat::json;
+  if (ext.empty()) throw IoError("no file extension; expected .obj, .off, .ply or .json", path.string());
   throw IoError(
-      "unknown mesh file extension '" + path.extension().string() + "'; expected .obj, .off or .ply",
+      "unknown mesh file extension '" + path.extension().string() + "'; expected .obj, .off, .ply or .json",
       path.string());
 }
 
@@ -53,12 +55,22 @@ Mesh read_mesh(const std::filesystem::path& path) {
       return build_mesh(io_detail::parse_off_text(text, name), name);
     case MeshFormat::ply:
       break;
+    case MeshFormat::json: {
+      nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+      if (doc.is_discarded()) throw IoError("not valid JSON", name);
+      return mesh_from_json(doc, name);
+    }
   }
   return build_mesh(io_detail::parse_ply_text(text, name), name);
 }
 
 void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {
   const MeshFormat format = format_for_path(path);
+  if (format == MeshFormat::json) {
+    const std::string text = mesh_to_json(mesh).dump();
+    write_atomically(path, [&](std::ostream& out) { out << text << '\n'; });
+    return;
+  }
   // Converting first means a mesh that an indexed polygon file cannot hold fails before any file is touched.
   const PolygonSoup soup = to_polygons(mesh);
   const bool binary = format == MeshFormat::ply && options.binary_ply;
@@ -75,6 +87,8 @@ void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const Write
           case MeshFormat::ply:
             write_ply(out, soup, binary);
             break;
+          case MeshFormat::json:
+            break;  // handled above
         }
       },
       binary);
