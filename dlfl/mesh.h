@@ -295,6 +295,7 @@ class Mesh {
   };
 
   friend class MeshBuilder;
+  friend struct MeshArrays;
   friend struct MeshTestAccess;  // lets the test suite corrupt a mesh to prove the validator catches it
 
   void require(VertexId v, const char* op) const;
