@@ -38,8 +38,11 @@ class Reader {
       fail(std::string(key) + "[" + std::to_string(i) + "]",
            "expected null or an array of " + std::to_string(n));
     }
-    for (const auto& x : e) {
-      if (!x.is_number()) fail(std::string(key) + "[" + std::to_string(i) + "]", "expected numbers");
+    for (std::size_t k = 0; k < n; ++k) {
+      if (!e[k].is_number()) {
+        fail(std::string(key) + "[" + std::to_string(i) + "][" + std::to_string(k) + "]",
+             "expected a number");
+      }
     }
     return &e;
   }
@@ -48,11 +51,12 @@ class Reader {
   H handle_at(const nlohmann::json& e, std::size_t k, const char* key, std::size_t i) const {
     const nlohmann::json& x = e[k];
     if (x.is_number_integer() && x.get<long long>() == -1) return H();
-    if (!x.is_number_unsigned() || x.get<unsigned long long>() >= H::invalid_index) {
+    // Signed or unsigned integers alike (nlohmann::json keeps the two apart).
+    if (!x.is_number_integer() || x.get<long long>() < 0 || x.get<long long>() >= H::invalid_index) {
       fail(std::string(key) + "[" + std::to_string(i) + "][" + std::to_string(k) + "]",
            "expected a handle or -1");
     }
-    return H(x.get<std::uint32_t>());
+    return H(static_cast<std::uint32_t>(x.get<long long>()));
   }
 
  private:
@@ -133,10 +137,11 @@ Mesh mesh_from_json(const nlohmann::json& doc, const std::string& name) {
   for (std::size_t i = 0; i < faces.size(); ++i) {
     if (const auto* e = r.slot(faces, "faces", i, 3)) {
       const auto& size = (*e)[1];
-      if (!size.is_number_unsigned() || size.get<unsigned long long>() >= 0xFFFFFFFFull) {
+      if (!size.is_number_integer() || size.get<long long>() < 0 || size.get<long long>() >= 0xFFFFFFFFll) {
         r.fail("faces[" + std::to_string(i) + "][1]", "expected a face size");
       }
-      a.faces[i] = {r.handle_at<CornerId>(*e, 0, "faces", i), size.get<std::uint32_t>(), true, (*e)[2] != 0};
+      a.faces[i] = {r.handle_at<CornerId>(*e, 0, "faces", i),
+                    static_cast<std::uint32_t>(size.get<long long>()), true, (*e)[2] != 0};
     }
   }
   try {

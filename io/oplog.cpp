@@ -54,10 +54,11 @@ class OpReader {
   template <class H>
   H handle(const char* field, const char* kind) const {
     const auto& v = get(field);
-    if (!v.is_number_unsigned() || v.get<unsigned long long>() >= H::invalid_index) {
+    // Integers written by hand in C++ are signed in nlohmann::json; parsed ones are unsigned: accept both.
+    if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() >= H::invalid_index) {
       fail(field, std::string("expected a ") + kind + " handle");
     }
-    H h(v.get<std::uint32_t>());
+    H h(static_cast<std::uint32_t>(v.get<long long>()));
     if (!mesh_.is_alive(h))
       fail(field, std::string(kind) + " " + to_string(h) + " does not exist at this point");
     return h;
@@ -108,15 +109,19 @@ void replay_op(Editor& editor, const nlohmann::json& op, std::size_t index, cons
     } else if (kind == "delete_vertex") {
       editor.delete_vertex(r.handle<VertexId>("vertex", "vertex"));
     } else if (kind == "insert_edge") {
-      editor.insert_edge(r.handle<CornerId>("corner1", "corner"), r.handle<CornerId>("corner2", "corner"));
+      const CornerId c1 = r.handle<CornerId>("corner1", "corner");  // in field order: arguments have none
+      const CornerId c2 = r.handle<CornerId>("corner2", "corner");
+      editor.insert_edge(c1, c2);
     } else if (kind == "delete_edge") {
       editor.delete_edge(r.handle<EdgeId>("edge", "edge"));
     } else if (kind == "subdivide_edge") {
-      editor.subdivide_edge(r.handle<EdgeId>("edge", "edge"), r.point("position"));
+      const EdgeId e = r.handle<EdgeId>("edge", "edge");
+      editor.subdivide_edge(e, r.point("position"));
     } else if (kind == "unsubdivide_edge") {
       editor.unsubdivide_edge(r.handle<VertexId>("vertex", "vertex"));
     } else if (kind == "set_position") {
-      editor.set_position(r.handle<VertexId>("vertex", "vertex"), r.point("position"));
+      const VertexId v = r.handle<VertexId>("vertex", "vertex");
+      editor.set_position(v, r.point("position"));
     } else if (kind == "create_face_manifold") {
       const auto& pts = r.get("positions");
       if (!pts.is_array()) r.fail("positions", "expected an array of [x, y, z]");
@@ -161,9 +166,10 @@ Editor replay_log(const nlohmann::json& log, const std::string& name) {
   }
   Editor::Options options;
   if (auto limit = log.find("undo_limit"); limit != log.end()) {
-    if (!limit->is_number_unsigned())
+    if (!limit->is_number_integer() || limit->get<long long>() < 0) {
       throw LogError(name, LogError::npos, "undo_limit", "expected an integer >= 0");
-    options.undo_limit = limit->get<std::size_t>();
+    }
+    options.undo_limit = static_cast<std::size_t>(limit->get<long long>());
   }
   auto ops = log.find("ops");
   if (ops == log.end() || !ops->is_array())

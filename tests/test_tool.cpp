@@ -119,4 +119,55 @@ TEST_CASE("tool: a failed convert leaves no output file") {
   CHECK(wrong_ext.exit_code == 1);
   CHECK_FALSE(std::filesystem::exists(scratch("cube.xyz")));
 }
+TEST_CASE("tool: subdivide writes the honeycomb and a log that replays to the same mesh") {
+  const auto out = scratch("dodeca2.json");
+  const auto log = scratch("dodeca2.log.json");
+  Run r = run("subdivide " + example("dodecahedron.obj") + " -s honeycomb -n 2 --param t=0.5 -o '" +
+              out.string() + "' --log '" + log.string() + "' --self-contained");
+  REQUIRE(r.exit_code == 0);
+  // Dodecahedron V=20 E=30 F=12: one step gives V=60 E=90 F=32, two give V=180 E=270 F=92.
+  auto j = nlohmann::json::parse(run("info '" + out.string() + "'").out);
+  CHECK(j["vertices"] == 180);
+  CHECK(j["edges"] == 270);
+  CHECK(j["faces"] == 92);
+  CHECK(j["valences"] == nlohmann::json({{"3", 180}}));
+  const auto replayed = scratch("replayed.json");
+  REQUIRE(run("replay '" + log.string() + "' -o '" + replayed.string() + "'").exit_code == 0);
+  auto k = nlohmann::json::parse(run("info '" + replayed.string() + "'").out);
+  CHECK(k["hash"] == j["hash"]);
+  // The log records every parameter, defaults included.
+  std::ifstream in(log);
+  auto doc = nlohmann::json::parse(in);
+  CHECK(doc["ops"][1]["params"] == nlohmann::json({{"t", 0.5}, {"a0", 0.45}, {"a1", 1.25}}));
+}
+
+TEST_CASE("tool: subdivide rejects bad parameters with one line and writes nothing") {
+  const auto out = scratch("never2.obj");
+  for (const char* params :
+       {"--param t=1.5", "--param a=0", "--param nope=1", "--param t", "--param a=0.5 --param a0=0.4"}) {
+    CAPTURE(params);
+    Run r =
+        run("subdivide " + example("cube.obj") + " -s honeycomb " + params + " -o '" + out.string() + "'");
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.rfind("error: ", 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK_FALSE(std::filesystem::exists(out));
+  }
+  CHECK(run("subdivide " + example("cube.obj") + " -s nosuch -o '" + out.string() + "'").exit_code == 1);
+  CHECK(run("subdivide " + example("cube.obj") + " -o '" + out.string() + "'").exit_code == 2);  // no -s
+  CHECK_FALSE(std::filesystem::exists(out));
+}
+
+TEST_CASE("tool: replay of a malformed log names the op and writes nothing") {
+  const auto log = scratch("bad.log.json");
+  std::ofstream(log)
+      << R"({"format": "dlfl-oplog", "version": 1, "ops": [{"op": "create_vertex", "position": [0, 0, 0]},
+    {"op": "delete_edge", "edge": 4}]})";
+  const auto out = scratch("never3.json");
+  Run r = run("replay '" + log.string() + "' -o '" + out.string() + "'");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find("op 1") != std::string::npos);
+  CHECK(r.err.find("'edge'") != std::string::npos);
+  CHECK_FALSE(std::filesystem::exists(out));
+}
 #endif

@@ -16,5 +16,7 @@ using Action = std::function<int()>;
 Action add_info(CLI::App& app);
 Action add_check(CLI::App& app);
 Action add_convert(CLI::App& app);
+Action add_subdivide(CLI::App& app);
+Action add_replay(CLI::App& app);
 
 }  // namespace dlfl::tool

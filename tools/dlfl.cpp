@@ -1,5 +1,5 @@
-// dlfl: inspect, check and convert DLFL meshes. Errors print one line "error: ..." on stderr; exit 2 for
-// usage errors, 1 for everything else.
+// dlfl: inspect, check, convert and subdivide DLFL meshes, and replay operation logs. Errors print one line
+// "error: ..." on stderr; exit 2 for usage errors, 1 for everything else.
 
 #include <exception>
 #include <iostream>
@@ -19,6 +19,8 @@ int main(int argc, char** argv) {
   add(add_info);
   add(add_check);
   add(add_convert);
+  add(add_subdivide);
+  add(add_replay);
 
   try {
     app.parse(argc, argv);

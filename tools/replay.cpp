@@ -1,0 +1,29 @@
+// dlfl replay LOG.json -o OUT
+
+#include <string>
+
+#include "commands.h"
+#include "io/mesh_io.h"
+#include "io/oplog.h"
+
+namespace dlfl::tool {
+
+Action add_replay(CLI::App& app) {
+  auto* cmd = app.add_subcommand("replay", "Replay an operation log and write the resulting mesh");
+  auto log = std::make_shared<std::string>();
+  auto out = std::make_shared<std::string>();
+  auto ascii = std::make_shared<bool>(false);
+  cmd->add_option("LOG", *log, "Operation log (.json)")->required();
+  cmd->add_option("-o,--output", *out, "Output mesh (format by extension; .json keeps every handle)")
+      ->required();
+  cmd->add_flag("--ascii", *ascii, "Write PLY as ASCII instead of binary little-endian");
+  return [log, out, ascii] {
+    const Editor editor = replay_log_file(*log);  // nothing is written unless the whole log replays
+    WriteOptions write;
+    write.binary_ply = !*ascii;
+    write_mesh(editor.mesh(), *out, write);
+    return ok;
+  };
+}
+
+}  // namespace dlfl::tool
