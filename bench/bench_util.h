@@ -37,3 +37,31 @@ inline void row(const std::string& what, double seconds, const std::string& note
 }
 
 }  // namespace dlfl::bench
+
+#include <fstream>
+
+namespace dlfl::bench {
+
+/// A field of /proc/self/status in KiB (e.g. "VmRSS", "VmHWM"); 0 if unavailable.
+inline long proc_status_kib(const char* field) {
+  std::ifstream in("/proc/self/status");
+  std::string key;
+  long value = 0;
+  while (in >> key) {
+    if (key == std::string(field) + ":") {
+      in >> value;
+      return value;
+    }
+    std::getline(in, key);
+  }
+  return 0;
+}
+
+/// Resets the peak-RSS mark (VmHWM) so the next phase's peak can be read on its own; false if not supported.
+inline bool reset_peak_rss() {
+  std::ofstream out("/proc/self/clear_refs");
+  out << "5";
+  return bool(out.flush());
+}
+
+}  // namespace dlfl::bench

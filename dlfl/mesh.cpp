@@ -10,7 +10,7 @@ namespace {
 bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 template <class H>
-std::string missing(const char* op, H h) {
+std::string missing_message(const char* op, H h) {
   return std::string(op) + ": " + to_string(h) + " does not exist (removed or never created)";
 }
 }  // namespace
@@ -30,73 +30,12 @@ std::uint32_t Mesh::valence(VertexId v) const {
   return n;
 }
 
-void Mesh::require(VertexId v, const char* op) const {
-  if (!is_alive(v)) throw InvalidArgument(missing(op, v));
-}
-void Mesh::require(EdgeId e, const char* op) const {
-  if (!is_alive(e)) throw InvalidArgument(missing(op, e));
-}
-void Mesh::require(FaceId f, const char* op) const {
-  if (!is_alive(f)) throw InvalidArgument(missing(op, f));
-}
-void Mesh::require(CornerId c, const char* op) const {
-  if (!is_alive(c)) throw InvalidArgument(missing(op, c));
-}
+void Mesh::missing(VertexId v, const char* op) { throw InvalidArgument(missing_message(op, v)); }
+void Mesh::missing(EdgeId e, const char* op) { throw InvalidArgument(missing_message(op, e)); }
+void Mesh::missing(FaceId f, const char* op) { throw InvalidArgument(missing_message(op, f)); }
+void Mesh::missing(CornerId c, const char* op) { throw InvalidArgument(missing_message(op, c)); }
 
-// ---- allocation: append, or bring back a removed element named by a Reuse
-// ----------------------------------
-
-CornerId Mesh::new_corner(CornerId reuse) {
-  ++live_corners_;
-  if (reuse.valid()) return reuse;
-  corners_.push_back({});
-  return CornerId(static_cast<std::uint32_t>(corners_.size() - 1));
-}
-
-EdgeId Mesh::new_edge(EdgeId reuse) {
-  ++live_edges_;
-  if (reuse.valid()) return reuse;
-  edges_.push_back({});
-  return EdgeId(static_cast<std::uint32_t>(edges_.size() - 1));
-}
-
-FaceId Mesh::new_face(FaceId reuse) {
-  ++live_faces_;
-  if (reuse.valid()) {
-    faces_[reuse.index()].alive = true;
-    return reuse;
-  }
-  faces_.push_back({});
-  faces_.back().alive = true;
-  return FaceId(static_cast<std::uint32_t>(faces_.size() - 1));
-}
-
-VertexId Mesh::new_vertex(VertexId reuse) {
-  ++live_vertices_;
-  if (reuse.valid()) return reuse;
-  positions_.emplace_back(0.0);
-  vertex_corner_.emplace_back();
-  return VertexId(static_cast<std::uint32_t>(vertex_corner_.size() - 1));
-}
-
-void Mesh::kill(CornerId c) {
-  corners_[c.index()].vertex = VertexId();
-  --live_corners_;
-}
-void Mesh::kill(EdgeId e) {
-  edges_[e.index()].corner[0] = CornerId();
-  --live_edges_;
-}
-void Mesh::kill(FaceId f) {
-  faces_[f.index()].alive = false;  // corner and hole flag stay, for a later revival
-  --live_faces_;
-}
-void Mesh::kill(VertexId v) {
-  vertex_corner_[v.index()] = CornerId();
-  --live_vertices_;
-}
-
-void Mesh::apply_anchors(const Reuse& reuse) {
+void Mesh::set_anchors(const Reuse& reuse) {
   // Anchors that no longer fit (the element is gone, or the corner is elsewhere) are ignored: they only
   // choose where iteration starts, never the topology.
   for (const auto& a : reuse.face_anchors) {

@@ -298,20 +298,70 @@ class Mesh {
   friend struct MeshArrays;
   friend struct MeshTestAccess;  // lets the test suite corrupt a mesh to prove the validator catches it
 
-  void require(VertexId v, const char* op) const;
-  void require(EdgeId e, const char* op) const;
-  void require(FaceId f, const char* op) const;
-  void require(CornerId c, const char* op) const;
+  // Precondition checks: inline fast path, out-of-line throw.
+  template <class H>
+  void require(H h, const char* op) const {
+    if (!is_alive(h)) [[unlikely]]
+      missing(h, op);
+  }
+  [[noreturn]] static void missing(VertexId v, const char* op);
+  [[noreturn]] static void missing(EdgeId e, const char* op);
+  [[noreturn]] static void missing(FaceId f, const char* op);
+  [[noreturn]] static void missing(CornerId c, const char* op);
 
-  CornerId new_corner(CornerId reuse);
-  EdgeId new_edge(EdgeId reuse);
-  FaceId new_face(FaceId reuse);
-  VertexId new_vertex(VertexId reuse);
-  void kill(CornerId c);
-  void kill(EdgeId e);
-  void kill(FaceId f);
-  void kill(VertexId v);
-  void apply_anchors(const Reuse& reuse);
+  // Allocation: append, or bring back the removed element a Reuse names. Inline: they are on every operator's
+  // hot path (a honeycomb step runs millions of them).
+  CornerId new_corner(CornerId reuse) {
+    ++live_corners_;
+    if (reuse.valid()) return reuse;
+    corners_.emplace_back();
+    return CornerId(static_cast<std::uint32_t>(corners_.size() - 1));
+  }
+  EdgeId new_edge(EdgeId reuse) {
+    ++live_edges_;
+    if (reuse.valid()) return reuse;
+    edges_.emplace_back();
+    return EdgeId(static_cast<std::uint32_t>(edges_.size() - 1));
+  }
+  FaceId new_face(FaceId reuse) {
+    ++live_faces_;
+    if (reuse.valid()) {
+      faces_[reuse.index()].alive = true;
+      return reuse;
+    }
+    faces_.push_back({CornerId(), 0, true, false});
+    return FaceId(static_cast<std::uint32_t>(faces_.size() - 1));
+  }
+  VertexId new_vertex(VertexId reuse) {
+    ++live_vertices_;
+    if (reuse.valid()) return reuse;
+    positions_.emplace_back(0.0);
+    vertex_corner_.emplace_back();
+    return VertexId(static_cast<std::uint32_t>(vertex_corner_.size() - 1));
+  }
+  void kill(CornerId c) {
+    corners_[c.index()].vertex = VertexId();
+    --live_corners_;
+  }
+  void kill(EdgeId e) {
+    edges_[e.index()].corner[0] = CornerId();
+    --live_edges_;
+  }
+  void kill(FaceId f) {
+    faces_[f.index()].alive = false;  // corner and hole flag stay, for a later revival
+    --live_faces_;
+  }
+  void kill(VertexId v) {
+    vertex_corner_[v.index()] = CornerId();
+    --live_vertices_;
+  }
+  void apply_anchors(const Reuse& reuse) {
+    if (reuse.face_anchors[0].face.valid() || reuse.face_anchors[1].face.valid() ||
+        reuse.vertex_anchors[0].vertex.valid() || reuse.vertex_anchors[1].vertex.valid()) [[unlikely]] {
+      set_anchors(reuse);
+    }
+  }
+  void set_anchors(const Reuse& reuse);
   void link(CornerId a, CornerId b) {
     corners_[a.index()].next = b;
     corners_[b.index()].prev = a;

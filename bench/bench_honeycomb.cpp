@@ -1,0 +1,68 @@
+// Honeycomb benchmark: one step on quad tori sized for about 10k and 1M output faces; time (median) and the
+// extra peak memory of the step on top of the input. Usage: dlfl_bench_honeycomb [runs=5]
+
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+
+#include "bench_util.h"
+#include "dlfl/build_mesh.h"
+#include "schemes/honeycomb.h"
+
+using namespace dlfl;
+
+namespace {
+Mesh torus(int n) {
+  PolygonSoup s;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / n;
+      s.positions.push_back(
+          {(2 + 0.5 * std::cos(v)) * std::cos(u), (2 + 0.5 * std::cos(v)) * std::sin(u), 0.5 * std::sin(v)});
+    }
+  }
+  auto id = [&](int i, int j) { return std::uint32_t((i % n) * n + (j % n)); };
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) s.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
+  }
+  return build_mesh(s);
+}
+
+struct Result {
+  double seconds;
+  std::size_t faces;
+  double extra_bytes_per_face;
+};
+
+Result measure(int n, int runs) {
+  const Mesh input = torus(n);  // F = V = n^2, so one step gives F' = F + V = 2 n^2
+  std::size_t faces = 0;
+  const double t = bench::median_seconds(runs, [&] { faces = honeycomb(input).num_faces(); });
+  // Peak memory of one more step, on its own: reset the high-water mark, run, read it.
+  double extra = -1;
+  if (bench::reset_peak_rss()) {
+    const long before = bench::proc_status_kib("VmRSS");
+    {
+      Mesh out = honeycomb(input);
+      faces = out.num_faces();
+    }
+    const long peak = bench::proc_status_kib("VmHWM");
+    extra = double(peak - before) * 1024.0 / double(faces);
+  }
+  return {t, faces, extra};
+}
+}  // namespace
+
+int main(int argc, char** argv) {
+  const int runs = argc > 1 ? std::stoi(argv[1]) : 5;
+  std::printf("honeycomb, one step on a quad torus, median of %d runs\n", runs);
+  const Result small = measure(71, runs);
+  const Result large = measure(707, runs);
+  for (const Result& r : {small, large}) {
+    std::printf("%9zu output faces  %8.4f s  %7.1f ns/face  extra peak %6.1f bytes/face\n", r.faces,
+                r.seconds, 1e9 * r.seconds / double(r.faces), r.extra_bytes_per_face);
+  }
+  std::printf("time per face, 1M / 10k: %.2f\n",
+              (large.seconds / double(large.faces)) / (small.seconds / double(small.faces)));
+  return 0;
+}
