@@ -29,7 +29,7 @@ Mesh torus(int n) {
 }
 
 struct Result {
-  double seconds;
+  bench::Timing time;
   std::size_t faces;
   double extra_bytes_per_face;
 };
@@ -37,7 +37,7 @@ struct Result {
 Result measure(int n, int runs) {
   const Mesh input = torus(n);  // F = V = n^2, so one step gives F' = F + V = 2 n^2
   std::size_t faces = 0;
-  const double t = bench::median_seconds(runs, [&] { faces = honeycomb(input).num_faces(); });
+  const bench::Timing t = bench::time_runs(runs, [&] { faces = honeycomb(input).num_faces(); });
   // Peak memory of one more step, on its own: reset the high-water mark, run, read it.
   double extra = -1;
   if (bench::reset_peak_rss()) {
@@ -55,14 +55,19 @@ Result measure(int n, int runs) {
 
 int main(int argc, char** argv) {
   const int runs = argc > 1 ? std::stoi(argv[1]) : 5;
-  std::printf("honeycomb, one step on a quad torus, median of %d runs\n", runs);
+  std::printf("honeycomb, one step on a quad torus, %d runs each\n", runs);
+  const double steal = bench::steal_seconds();
   const Result small = measure(71, runs);
   const Result large = measure(707, runs);
   for (const Result& r : {small, large}) {
-    std::printf("%9zu output faces  %8.4f s  %7.1f ns/face  extra peak %6.1f bytes/face\n", r.faces,
-                r.seconds, 1e9 * r.seconds / double(r.faces), r.extra_bytes_per_face);
+    std::printf(
+        "%9zu output faces  median %8.4f s  best %8.4f s  (%6.1f ns/face best)  extra peak %6.1f "
+        "bytes/face\n",
+        r.faces, r.time.median, r.time.best, 1e9 * r.time.best / double(r.faces), r.extra_bytes_per_face);
   }
-  std::printf("time per face, 1M / 10k: %.2f\n",
-              (large.seconds / double(large.faces)) / (small.seconds / double(small.faces)));
+  std::printf("time per face, 1M / 10k: median %.2f, best %.2f\n",
+              (large.time.median / double(large.faces)) / (small.time.median / double(small.faces)),
+              (large.time.best / double(large.faces)) / (small.time.best / double(small.faces)));
+  std::printf("CPU steal by the VM host during the measurements: %.2f s\n", bench::steal_seconds() - steal);
   return 0;
 }

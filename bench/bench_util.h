@@ -11,8 +11,15 @@
 
 namespace dlfl::bench {
 
-/// Runs `f` `runs` times and returns the median wall time in seconds.
-inline double median_seconds(int runs, const std::function<void()>& f) {
+/// Wall times of repeated runs.
+struct Timing {
+  double median = 0;
+  double best = 0;
+};
+
+/// Runs `f` `runs` times; median and best wall time in seconds. The best run is the one least disturbed by
+/// the rest of the machine (on a shared VM, CPU steal can double a run).
+inline Timing time_runs(int runs, const std::function<void()>& f) {
   std::vector<double> t;
   for (int i = 0; i < runs; ++i) {
     auto start = std::chrono::steady_clock::now();
@@ -20,7 +27,21 @@ inline double median_seconds(int runs, const std::function<void()>& f) {
     t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
   std::sort(t.begin(), t.end());
-  return t[t.size() / 2];
+  return {t[t.size() / 2], t.front()};
+}
+
+/// Median wall time in seconds of `runs` runs.
+inline double median_seconds(int runs, const std::function<void()>& f) { return time_runs(runs, f).median; }
+
+/// CPU time stolen from this VM by its host so far, all cores, in seconds (0 where /proc/stat has no steal).
+inline double steal_seconds() {
+  FILE* f = std::fopen("/proc/stat", "r");
+  if (!f) return 0;
+  unsigned long long v[8] = {};
+  const int n = std::fscanf(f, "cpu %llu %llu %llu %llu %llu %llu %llu %llu", &v[0], &v[1], &v[2], &v[3],
+                            &v[4], &v[5], &v[6], &v[7]);
+  std::fclose(f);
+  return n == 8 ? double(v[7]) / 100.0 : 0;  // USER_HZ ticks
 }
 
 /// Peak resident set size of this process so far, in MiB.

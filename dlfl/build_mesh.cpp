@@ -145,7 +145,7 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
   }
 
   // Vertices: the first corner at each; unused vertices become point spheres.
-  m.positions_ = soup.positions;
+  m.positions_.assign(soup.positions.begin(), soup.positions.end());
   m.vertex_corner_.assign(nv, CornerId());
   for (std::uint32_t k = 0; k < m.corners_.size(); ++k) {
     auto& anchor = m.vertex_corner_[m.corners_[k].vertex.index()];

@@ -213,40 +213,40 @@ Mesh::CompactMap Mesh::compact() {
 
   auto mapped = [](const auto& table, auto h) { return h.valid() ? table[h.index()] : decltype(h)(); };
 
-  std::vector<glm::dvec3> positions;
-  std::vector<CornerId> vertex_corner;
-  positions.reserve(live_vertices_);
-  vertex_corner.reserve(live_vertices_);
-  for (VertexId v : vertices()) {
-    positions.push_back(positions_[v.index()]);
-    vertex_corner.push_back(map.corners[vertex_corner_[v.index()].index()]);
+  // In place: a live element's new index is never above its old one, so moving them down in increasing order
+  // never overwrites one still to be moved.
+  for (std::uint32_t i = 0; i < map.vertices.size(); ++i) {
+    const VertexId to = map.vertices[i];
+    if (!to.valid()) continue;
+    positions_[to.index()] = positions_[i];
+    vertex_corner_[to.index()] = map.corners[vertex_corner_[i].index()];
   }
-  std::vector<EdgeRecord> new_edges;
-  new_edges.reserve(live_edges_);
-  for (EdgeId e : edges()) {
-    const auto& r = edges_[e.index()];
-    new_edges.push_back({{map.corners[r.corner[0].index()], map.corners[r.corner[1].index()]}});
+  for (std::uint32_t i = 0; i < map.edges.size(); ++i) {
+    const EdgeId to = map.edges[i];
+    if (!to.valid()) continue;
+    const auto old = edges_[i].corner;
+    edges_[to.index()].corner = {map.corners[old[0].index()], map.corners[old[1].index()]};
   }
-  std::vector<FaceRecord> new_faces;
-  new_faces.reserve(live_faces_);
-  for (FaceId f : faces()) {
-    FaceRecord r = faces_[f.index()];
+  for (std::uint32_t i = 0; i < map.faces.size(); ++i) {
+    const FaceId to = map.faces[i];
+    if (!to.valid()) continue;
+    FaceRecord r = faces_[i];
     r.corner = map.corners[r.corner.index()];
-    new_faces.push_back(r);
+    faces_[to.index()] = r;
   }
-  std::vector<CornerRecord> new_corners;
-  new_corners.reserve(live_corners_);
-  for (CornerId c : corners()) {
-    const auto& r = corners_[c.index()];
-    new_corners.push_back({map.vertices[r.vertex.index()], map.faces[r.face.index()],
-                           map.corners[r.next.index()], map.corners[r.prev.index()],
-                           mapped(map.edges, r.edge)});
+  for (std::uint32_t i = 0; i < map.corners.size(); ++i) {
+    const CornerId to = map.corners[i];
+    if (!to.valid()) continue;
+    const CornerRecord r = corners_[i];
+    corners_[to.index()] = {map.vertices[r.vertex.index()], map.faces[r.face.index()],
+                            map.corners[r.next.index()], map.corners[r.prev.index()],
+                            mapped(map.edges, r.edge)};
   }
-  positions_ = std::move(positions);
-  vertex_corner_ = std::move(vertex_corner);
-  edges_ = std::move(new_edges);
-  faces_ = std::move(new_faces);
-  corners_ = std::move(new_corners);
+  positions_.resize(live_vertices_);
+  vertex_corner_.resize(live_vertices_);
+  edges_.resize(live_edges_);
+  faces_.resize(live_faces_);
+  corners_.resize(live_corners_);
   return map;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "dlfl/handles.h"
+#include "dlfl/large_allocator.h"
 
 namespace dlfl {
 
@@ -370,11 +371,11 @@ class Mesh {
   // Walks the cycles starting at a and at b at the same pace; returns true if the one from a is no longer.
   bool cycle_not_longer(CornerId a, CornerId b, std::uint32_t& length_a, std::uint32_t& length_b) const;
 
-  std::vector<glm::dvec3> positions_;
-  std::vector<CornerId> vertex_corner_;  // invalid for a removed vertex
-  std::vector<CornerRecord> corners_;
-  std::vector<EdgeRecord> edges_;
-  std::vector<FaceRecord> faces_;
+  detail::LargeVector<glm::dvec3> positions_;
+  detail::LargeVector<CornerId> vertex_corner_;  // invalid for a removed vertex
+  detail::LargeVector<CornerRecord> corners_;
+  detail::LargeVector<EdgeRecord> edges_;
+  detail::LargeVector<FaceRecord> faces_;
   std::size_t live_vertices_ = 0;
   std::size_t live_edges_ = 0;
   std::size_t live_faces_ = 0;
