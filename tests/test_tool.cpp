@@ -170,4 +170,17 @@ TEST_CASE("tool: replay of a malformed log names the op and writes nothing") {
   CHECK(r.err.find("'edge'") != std::string::npos);
   CHECK_FALSE(std::filesystem::exists(out));
 }
+TEST_CASE("tool: convert of a malformed input names the line and writes nothing") {
+  const auto bad = scratch("fin.obj");
+  // Three triangles on the edge 1-2: an edge of more than two faces.
+  std::ofstream(bad) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 -1 0\nv 0 0 1\nf 1 2 3\nf 2 1 4\nf 2 1 5\n";
+  const auto out = scratch("fin.ply");
+  std::ofstream(out) << "old content";
+  Run r = run("convert '" + bad.string() + "' '" + out.string() + "'");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err.find(":8:") != std::string::npos);
+  std::ifstream in(out);
+  std::string content((std::istreambuf_iterator<char>(in)), {});
+  CHECK(content == "old content");  // the existing file is untouched
+}
 #endif
