@@ -10,8 +10,10 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <glm/vec3.hpp>
 #include <iosfwd>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 
@@ -189,6 +191,24 @@ class BlockWriter {
   void number(std::uint64_t value) {
     char* p = room(24);
     size_ = static_cast<std::size_t>(std::to_chars(p, p + 24, value).ptr - buffer_.get());
+  }
+  /// "x y z\n", shortest round-trip decimals.
+  void point_line(const glm::dvec3& p) {
+    number(p.x);
+    put(' ');
+    number(p.y);
+    put(' ');
+    number(p.z);
+    put('\n');
+  }
+  /// "n i0 i1 ...\n": a face as OFF and ASCII PLY write it.
+  void counted_face_line(std::span<const std::uint32_t> face) {
+    number(std::uint64_t{face.size()});
+    for (std::uint32_t i : face) {
+      put(' ');
+      number(std::uint64_t{i});
+    }
+    put('\n');
   }
   /// The bytes of `value` in little-endian order.
   template <class T>

@@ -76,12 +76,7 @@ void write_obj(std::ostream& out, const PolygonSoup& soup) {
   io_detail::BlockWriter w(out);
   for (const glm::dvec3& p : soup.positions) {
     w.text("v ");
-    w.number(p.x);
-    w.put(' ');
-    w.number(p.y);
-    w.put(' ');
-    w.number(p.z);
-    w.put('\n');
+    w.point_line(p);
   }
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
     w.put('f');

@@ -103,23 +103,8 @@ void write_off(std::ostream& out, const PolygonSoup& soup) {
   w.put(' ');
   w.number(std::uint64_t{soup.num_faces()});
   w.text(" 0\n");  // the edge count is optional information; readers ignore it
-  for (const glm::dvec3& p : soup.positions) {
-    w.number(p.x);
-    w.put(' ');
-    w.number(p.y);
-    w.put(' ');
-    w.number(p.z);
-    w.put('\n');
-  }
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const auto face = soup.face(f);
-    w.number(std::uint64_t{face.size()});
-    for (std::uint32_t i : face) {
-      w.put(' ');
-      w.number(std::uint64_t{i});
-    }
-    w.put('\n');
-  }
+  for (const glm::dvec3& p : soup.positions) w.point_line(p);
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) w.counted_face_line(soup.face(f));
   w.flush();
 }
 

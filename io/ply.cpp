@@ -61,47 +61,32 @@ T load(const unsigned char* p) {
   return little_endian(value);
 }
 
-double load_real(Scalar t, const unsigned char* p) {
+// A scalar of any PLY type, converted to R (int64 is exact for every integer type PLY has).
+template <class R>
+R load_as(Scalar t, const unsigned char* p) {
   switch (t) {
     case Scalar::i8:
-      return load<std::int8_t>(p);
+      return static_cast<R>(load<std::int8_t>(p));
     case Scalar::u8:
-      return load<std::uint8_t>(p);
+      return static_cast<R>(load<std::uint8_t>(p));
     case Scalar::i16:
-      return load<std::int16_t>(p);
+      return static_cast<R>(load<std::int16_t>(p));
     case Scalar::u16:
-      return load<std::uint16_t>(p);
+      return static_cast<R>(load<std::uint16_t>(p));
     case Scalar::i32:
-      return load<std::int32_t>(p);
+      return static_cast<R>(load<std::int32_t>(p));
     case Scalar::u32:
-      return load<std::uint32_t>(p);
+      return static_cast<R>(load<std::uint32_t>(p));
     case Scalar::f32:
-      return load<float>(p);
+      return static_cast<R>(load<float>(p));
     case Scalar::f64:
-      return load<double>(p);
+      return static_cast<R>(load<double>(p));
   }
   return 0;
 }
-
+double load_real(Scalar t, const unsigned char* p) { return load_as<double>(t, p); }
 // Only called for integer types (checked in the header).
-std::int64_t load_integer(Scalar t, const unsigned char* p) {
-  switch (t) {
-    case Scalar::i8:
-      return load<std::int8_t>(p);
-    case Scalar::u8:
-      return load<std::uint8_t>(p);
-    case Scalar::i16:
-      return load<std::int16_t>(p);
-    case Scalar::u16:
-      return load<std::uint16_t>(p);
-    case Scalar::i32:
-      return load<std::int32_t>(p);
-    case Scalar::u32:
-      return load<std::uint32_t>(p);
-    default:
-      return 0;
-  }
-}
+std::int64_t load_integer(Scalar t, const unsigned char* p) { return load_as<std::int64_t>(t, p); }
 
 // What a property means to the reader.
 enum class Role : std::uint8_t { skip, x, y, z, indices };
@@ -422,23 +407,8 @@ void write_ply(std::ostream& out, const PolygonSoup& soup, bool binary) {
       for (std::uint32_t i : face) w.binary(i);
     }
   } else {
-    for (const glm::dvec3& p : soup.positions) {
-      w.number(p.x);
-      w.put(' ');
-      w.number(p.y);
-      w.put(' ');
-      w.number(p.z);
-      w.put('\n');
-    }
-    for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-      const auto face = soup.face(f);
-      w.number(std::uint64_t{face.size()});
-      for (std::uint32_t i : face) {
-        w.put(' ');
-        w.number(std::uint64_t{i});
-      }
-      w.put('\n');
-    }
+    for (const glm::dvec3& p : soup.positions) w.point_line(p);
+    for (std::size_t f = 0; f < soup.num_faces(); ++f) w.counted_face_line(soup.face(f));
   }
   w.flush();
 }
