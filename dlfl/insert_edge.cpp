@@ -39,8 +39,8 @@ InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const Reuse& reuse)
   InsertEdgeResult result;
   Step& inverse = result.inverse;
   inverse.kind = Step::Kind::delete_edge;
-  inverse.reuse.face_anchors = {{{f1, first_corner(f1)}, {f2, first_corner(f2)}}};
-  inverse.reuse.vertex_anchors = {{{u, corner(u)}, {w, corner(w)}}};
+  // Anchors: insert_edge never moves a vertex's representative (no corner goes away), and a face's first corner
+  // only when a split carries it to the other part; that one case is recorded below.
 
   // In a split, measure the two parts before relinking: part A = c2 .. a, part B = c1 .. b (original
   // corners).
@@ -122,7 +122,10 @@ InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const Reuse& reuse)
   corners_[(keep_b ? n2 : n1).index()].face = f;
   faces_[f.index()].size = (keep_b ? length_b : length_a) + 1;
   faces_[g.index()].size = (keep_b ? length_a : length_b) + 1;
-  if (f_anchor_moved) faces_[f.index()].corner = kept_corner;
+  if (f_anchor_moved) {
+    faces_[f.index()].corner = kept_corner;
+    inverse.reuse.face_anchors[0] = {f, f_anchor};
+  }
   if (!(reuse.face.valid() && g_anchor_inside)) faces_[g.index()].corner = moved_corner;
   result.created_face = g;
   apply_anchors(reuse);
