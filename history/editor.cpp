@@ -85,8 +85,9 @@ void Editor::subdivide(const std::string& scheme, const SchemeParams& params, in
   if (iterations < 0)
     throw InvalidArgument("subdivide: iterations must be >= 0, got " + std::to_string(iterations));
   const SchemeParams full = resolve_scheme_params(scheme, params);
-  Mesh next = mesh_;  // M_n stays untouched in the history; only the copy is replaced step by step
-  for (int i = 0; i < iterations; ++i) next = apply_scheme(next, scheme, full);
+  // Each iteration reads the previous mesh and builds a new one; M_n itself is never copied or touched.
+  Mesh next = iterations == 0 ? mesh_ : apply_scheme(mesh_, scheme, full);
+  for (int i = 1; i < iterations; ++i) next = apply_scheme(next, scheme, full);
   nlohmann::json op = {
       {"op", "subdivide"}, {"scheme", scheme}, {"iterations", iterations}, {"params", params_json(full)}};
   std::swap(mesh_, next);
@@ -141,13 +142,11 @@ void Editor::set_position(VertexId v, const glm::dvec3& position) {
 FaceManifold Editor::create_face_manifold(std::span<const glm::dvec3> positions, std::span<VertexId> vertices,
                                           std::span<CornerId> front_corners,
                                           std::span<CornerId> back_corners) {
-  // Run on a copy so that a failure leaves the current mesh as it was; then record the inverse of each
-  // primitive (deleting the N edges in reverse, then the N point spheres) as one entry.
+  // create_face_manifold checks all its input before it changes anything, so it runs on the mesh itself; the
+  // entry records the inverse of each primitive (the N edges deleted in reverse, then the N point spheres).
   const std::uint32_t first_vertex = mesh_.vertex_capacity();
   const std::uint32_t first_edge = mesh_.edge_capacity();
-  Mesh next = mesh_;
-  FaceManifold fm = dlfl::create_face_manifold(next, positions, vertices, front_corners, back_corners);
-  std::swap(mesh_, next);
+  FaceManifold fm = dlfl::create_face_manifold(mesh_, positions, vertices, front_corners, back_corners);
   Entry entry;
   const auto n = static_cast<std::uint32_t>(positions.size());
   // The entry's steps run back to front on undo: vertices' deletions first in the list, edges' after them.
