@@ -107,6 +107,10 @@ TEST_CASE("history: a failed operation changes nothing and is not logged") {
   CHECK_THROWS_AS(ed.subdivide("no-such-scheme"), InvalidArgument);
   CHECK_THROWS_AS(ed.subdivide("honeycomb", {{"zzz", 1.0}}), InvalidArgument);
   CHECK_THROWS_AS(ed.subdivide("honeycomb", {{"a", 0.5}, {"a0", 0.4}}), InvalidArgument);
+  const std::vector<glm::dvec3> one_point{{0, 0, 0}};
+  const std::vector<glm::dvec3> not_finite{{0, 0, 0}, {1, 0, 0}, {0, NAN, 0}};
+  CHECK_THROWS_AS(ed.create_face_manifold(one_point), InvalidArgument);
+  CHECK_THROWS_AS(ed.create_face_manifold(not_finite), InvalidArgument);
   CHECK(ed.mesh() == before);
   CHECK(ed.log()["ops"].size() == ops);
 }
