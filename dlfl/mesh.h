@@ -297,6 +297,7 @@ class Mesh {
 
   friend class MeshBuilder;
   friend struct MeshArrays;
+  friend class MeshAssembler;
   friend struct MeshTestAccess;  // lets the test suite corrupt a mesh to prove the validator catches it
 
   // Precondition checks: inline fast path, out-of-line throw.

@@ -5,6 +5,7 @@
 #include <functional>
 
 #include "dlfl/errors.h"
+#include "schemes/catmull_clark.h"
 #include "schemes/honeycomb.h"
 
 namespace dlfl {
@@ -51,7 +52,10 @@ SchemeParams honeycomb_defaults(SchemeParams p) {
 }
 
 const std::vector<SchemeEntry>& registry() {
+  // Schemes without parameters accept none.
+  const auto no_params = [](SchemeParams p) { return p; };
   static const std::vector<SchemeEntry> entries = {
+      {"catmull-clark", {}, no_params, [](const Mesh& m, const SchemeParams&) { return catmull_clark(m); }},
       {"honeycomb",
        {"t", "a", "a0", "a1"},
        honeycomb_defaults,
@@ -84,7 +88,8 @@ SchemeParams resolve_scheme_params(const std::string& scheme, const SchemeParams
     if (std::find(entry.params.begin(), entry.params.end(), name) == entry.params.end()) {
       std::string list;
       for (const auto& p : entry.params) list += (list.empty() ? "" : ", ") + p;
-      throw InvalidArgument(scheme + ": unknown parameter '" + name + "' (known: " + list + ")");
+      throw InvalidArgument(scheme + ": unknown parameter '" + name + "' (" +
+                            (list.empty() ? std::string("it takes none") : "known: " + list) + ")");
     }
   }
   return entry.fill_defaults(given);
