@@ -1,6 +1,7 @@
 // Editor history (exact undo/redo of operators and schemes), the native JSON format, and operation logs.
 
 #include <doctest/doctest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -19,7 +20,8 @@ using namespace dlfl;
 namespace {
 
 std::filesystem::path scratch_dir() {
-  auto dir = std::filesystem::temp_directory_path() / "dlfl_history_test";
+  // One directory per process: CTest runs test cases in parallel processes.
+  auto dir = std::filesystem::temp_directory_path() / ("dlfl_history_test_" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
   return dir;
 }

@@ -4,6 +4,7 @@
 
 #ifdef DLFL_TOOL
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
@@ -14,6 +15,14 @@
 
 namespace {
 
+// CTest runs each test case as its own process, in parallel: every process gets its own directory, so
+// no two of them share a captured stderr or an output file.
+std::filesystem::path scratch_dir() {
+  const auto dir = std::filesystem::temp_directory_path() / ("dlfl_tool_test_" + std::to_string(getpid()));
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 struct Run {
   int exit_code;
   std::string out;
@@ -22,9 +31,7 @@ struct Run {
 
 // Runs the tool with arguments (already shell-quoted where needed), capturing stdout and stderr.
 Run run(const std::string& args) {
-  const auto dir = std::filesystem::temp_directory_path() / "dlfl_tool_test";
-  std::filesystem::create_directories(dir);
-  const auto err_path = dir / "stderr.txt";
+  const auto err_path = scratch_dir() / "stderr.txt";
   const std::string cmd = std::string("'") + DLFL_TOOL + "' " + args + " 2>'" + err_path.string() + "'";
   Run r{};
   FILE* p = popen(cmd.c_str(), "r");
@@ -44,8 +51,7 @@ std::string example(const char* name) {
 }
 
 std::filesystem::path scratch(const char* name) {
-  const auto dir = std::filesystem::temp_directory_path() / "dlfl_tool_test";
-  std::filesystem::create_directories(dir);
+  const auto dir = scratch_dir();
   std::filesystem::remove(dir / name);
   return dir / name;
 }
