@@ -84,6 +84,25 @@ void Mesh::set_vertex_corner(VertexId v, CornerId c) {
   vertex_corner_[v.index()] = c;
 }
 
+glm::dvec3 Mesh::face_point_or_centroid(FaceId f) const {
+  if (auto p = face_point(f)) return *p;
+  glm::dvec3 sum(0.0);
+  for (CornerId c : corners(f)) sum += position(vertex(c));
+  return sum / double(size(f));
+}
+
+void Mesh::set_face_point(FaceId f, const std::optional<glm::dvec3>& point) {
+  require(f, "set_face_point");
+  if (point && !finite(*point)) {
+    throw InvalidArgument("set_face_point: control point of " + to_string(f) + " is not finite");
+  }
+  if (face_points_.empty()) {
+    if (!point) return;
+    face_points_.assign(faces_.size(), glm::dvec3(std::nan(""), 0.0, 0.0));
+  }
+  face_points_[f.index()] = point ? *point : glm::dvec3(std::nan(""), 0.0, 0.0);
+}
+
 void Mesh::set_hole(FaceId f, bool hole) {
   require(f, "set_hole");
   faces_[f.index()].hole = hole;
@@ -181,6 +200,15 @@ Step Mesh::apply(const Step& step) {
       unsubdivide_edge(step.vertex, step.reuse);
       return inverse;
     }
+    case Step::Kind::set_face_point: {
+      require(step.face, "set_face_point");
+      inverse.kind = Step::Kind::set_face_point;
+      inverse.face = step.face;
+      const auto old = face_point(step.face);
+      inverse.position = old ? *old : glm::dvec3(std::nan(""), 0.0, 0.0);
+      set_face_point(step.face, std::isnan(step.position.x) ? std::nullopt : std::optional(step.position));
+      return inverse;
+    }
     case Step::Kind::set_position: {
       require(step.vertex, "set_position");
       inverse.kind = Step::Kind::set_position;
@@ -233,6 +261,7 @@ Mesh::CompactMap Mesh::compact() {
     FaceRecord r = faces_[i];
     r.corner = map.corners[r.corner.index()];
     faces_[to.index()] = r;
+    if (!face_points_.empty()) face_points_[to.index()] = face_points_[i];
   }
   for (std::uint32_t i = 0; i < map.corners.size(); ++i) {
     const CornerId to = map.corners[i];
@@ -246,6 +275,7 @@ Mesh::CompactMap Mesh::compact() {
   vertex_corner_.resize(live_vertices_);
   edges_.resize(live_edges_);
   faces_.resize(live_faces_);
+  if (!face_points_.empty()) face_points_.resize(live_faces_);
   corners_.resize(live_corners_);
   return map;
 }
@@ -283,6 +313,8 @@ bool operator==(const Mesh& a, const Mesh& b) {
     const auto& x = a.faces_[f.index()];
     const auto& y = b.faces_[f.index()];
     if (x.corner != y.corner || x.size != y.size || x.hole != y.hole) return false;
+    const auto p = a.face_point(f), q = b.face_point(f);
+    if (p.has_value() != q.has_value() || (p && std::memcmp(&*p, &*q, sizeof(glm::dvec3)) != 0)) return false;
   }
   for (CornerId c : a.corners()) {
     const auto& x = a.corners_[c.index()];

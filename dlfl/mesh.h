@@ -4,9 +4,11 @@
 // conventions.
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <vector>
 
 #include "dlfl/handles.h"
@@ -48,10 +50,12 @@ struct Step {
     subdivide_edge,    ///< uses edge, position
     unsubdivide_edge,  ///< uses vertex
     set_position,      ///< uses vertex, position
+    set_face_point,    ///< uses face, position (a NaN x clears the point)
   };
   Kind kind = Kind::create_vertex;
   VertexId vertex{};
   EdgeId edge{};
+  FaceId face{};
   CornerId corner1{};
   CornerId corner2{};
   glm::dvec3 position{0.0};
@@ -144,6 +148,17 @@ class Mesh {
   std::uint32_t size(FaceId f) const { return faces_[f.index()].size; }
   /// Hole faces stand for the boundary loops of an open mesh; writers omit them.
   bool is_hole(FaceId f) const { return faces_[f.index()].hole; }
+  /// The face's control point (the central control vertex of Zhang-Wang honeycomb subdivision), if one was
+  /// set. Faces made by operators and by most schemes have none; `face_point_or_centroid` then gives the
+  /// centroid.
+  std::optional<glm::dvec3> face_point(FaceId f) const {
+    if (face_points_.empty() || std::isnan(face_points_[f.index()].x)) return std::nullopt;
+    return face_points_[f.index()];
+  }
+  /// The control point if set, else the centroid of the face's vertices.
+  glm::dvec3 face_point_or_centroid(FaceId f) const;
+  /// True if any face, live or removed, carries a control point.
+  bool has_face_points() const { return !face_points_.empty(); }
 
   // ---- navigation, O(1) per step
   // ----------------------------------------------------------------------------
@@ -259,6 +274,9 @@ class Mesh {
   /// Makes c the vertex's representative corner (where rotation starts).
   void set_vertex_corner(VertexId v, CornerId c);
   void set_hole(FaceId f, bool hole);
+  /// Sets (or, with `std::nullopt`, clears) a face's control point. Throws InvalidArgument for a removed face
+  /// or a non-finite point. A removed face keeps its point, so bringing the face back restores it.
+  void set_face_point(FaceId f, const std::optional<glm::dvec3>& point);
 
   // ---- maintenance
   // -------------------------------------------------------------------------------------------
@@ -332,6 +350,7 @@ class Mesh {
       return reuse;
     }
     faces_.push_back({CornerId(), 0, true, false});
+    if (!face_points_.empty()) face_points_.emplace_back(std::nan(""), 0.0, 0.0);
     return FaceId(static_cast<std::uint32_t>(faces_.size() - 1));
   }
   VertexId new_vertex(VertexId reuse) {
@@ -377,6 +396,8 @@ class Mesh {
   detail::LargeVector<CornerRecord> corners_;
   detail::LargeVector<EdgeRecord> edges_;
   detail::LargeVector<FaceRecord> faces_;
+  // Control points by face handle: empty until the first is set, then one slot per face (NaN x = unset).
+  detail::LargeVector<glm::dvec3> face_points_;
   std::size_t live_vertices_ = 0;
   std::size_t live_edges_ = 0;
   std::size_t live_faces_ = 0;

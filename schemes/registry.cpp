@@ -5,66 +5,25 @@
 #include <functional>
 
 #include "dlfl/errors.h"
-#include "schemes/catmull_clark.h"
-#include "schemes/honeycomb.h"
+#include "schemes/registry_entry.h"
 
 namespace dlfl {
 namespace {
 
-struct SchemeEntry {
-  const char* name;
-  std::vector<std::string> params;                          // every parameter name the scheme knows
-  std::function<SchemeParams(SchemeParams)> fill_defaults;  // given (names known) -> full set, cross-checked
-  std::function<Mesh(const Mesh&, const SchemeParams&)> apply;
-};
-
-double number(const SchemeParams& p, const char* scheme, const char* name) {
-  auto it = p.find(name);
-  if (it == p.end()) throw InvalidArgument(std::string(scheme) + ": parameter " + name + " is missing");
-  if (const double* d = std::get_if<double>(&it->second)) return *d;
-  throw InvalidArgument(std::string(scheme) + ": parameter " + name + " must be a number, not '" +
-                        std::get<std::string>(it->second) + "'");
-}
-
-HoneycombParams honeycomb_params(const SchemeParams& p) {
-  HoneycombParams h;
-  if (p.count("t")) h.t = number(p, "honeycomb", "t");
-  if (p.count("a")) h.a = number(p, "honeycomb", "a");
-  if (p.count("a0")) h.a0 = number(p, "honeycomb", "a0");
-  if (p.count("a1")) h.a1 = number(p, "honeycomb", "a1");
-  return h;
-}
-
-// The tension is either the constant a or the function a0 + a1/N; the log records whichever is in force.
-SchemeParams honeycomb_defaults(SchemeParams p) {
-  const HoneycombParams defaults;
-  if (p.count("a") && (p.count("a0") || p.count("a1"))) {
-    throw InvalidArgument(
-        "honeycomb: give either parameter a (constant tension) or a0/a1 (a = a0 + a1/N), not both");
-  }
-  p.try_emplace("t", defaults.t);
-  if (!p.count("a")) {
-    p.try_emplace("a0", defaults.a0);
-    p.try_emplace("a1", defaults.a1);
-  }
-  honeycomb_params(p);  // type checks
-  return p;
-}
-
-const std::vector<SchemeEntry>& registry() {
-  // Schemes without parameters accept none.
-  const auto no_params = [](SchemeParams p) { return p; };
-  static const std::vector<SchemeEntry> entries = {
-      {"catmull-clark", {}, no_params, [](const Mesh& m, const SchemeParams&) { return catmull_clark(m); }},
-      {"honeycomb",
-       {"t", "a", "a0", "a1"},
-       honeycomb_defaults,
-       [](const Mesh& m, const SchemeParams& p) { return honeycomb(m, honeycomb_params(p)); }},
-  };
+const std::vector<detail::SchemeEntry>& registry() {
+  static const std::vector<detail::SchemeEntry> entries = [] {
+    std::vector<detail::SchemeEntry> all;
+    for (auto family : {detail::classic_scheme_entries, detail::meng_prautzsch_scheme_entries,
+                        detail::mlca_scheme_entries}) {
+      auto more = family();
+      all.insert(all.end(), std::make_move_iterator(more.begin()), std::make_move_iterator(more.end()));
+    }
+    return all;
+  }();
   return entries;
 }
 
-const SchemeEntry& find(const std::string& name) {
+const detail::SchemeEntry& find(const std::string& name) {
   for (const auto& e : registry()) {
     if (name == e.name) return e;
   }
@@ -83,7 +42,7 @@ std::vector<std::string> scheme_names() {
 }
 
 SchemeParams resolve_scheme_params(const std::string& scheme, const SchemeParams& given) {
-  const SchemeEntry& entry = find(scheme);
+  const detail::SchemeEntry& entry = find(scheme);
   for (const auto& [name, value] : given) {
     if (std::find(entry.params.begin(), entry.params.end(), name) == entry.params.end()) {
       std::string list;

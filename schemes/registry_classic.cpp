@@ -1,0 +1,50 @@
+// The registry entries of the classic schemes and the honeycomb family.
+
+#include "dlfl/errors.h"
+#include "schemes/catmull_clark.h"
+#include "schemes/honeycomb.h"
+#include "schemes/registry_entry.h"
+
+namespace dlfl::detail {
+namespace {
+
+HoneycombParams honeycomb_params(const SchemeParams& p) {
+  HoneycombParams h;
+  if (p.count("t")) h.t = number(p, "honeycomb", "t");
+  if (p.count("a")) h.a = number(p, "honeycomb", "a");
+  if (p.count("a0")) h.a0 = number(p, "honeycomb", "a0");
+  if (p.count("a1")) h.a1 = number(p, "honeycomb", "a1");
+  return h;
+}
+
+// The tension is either the constant a or the function a0 + a1/N; the log records whichever is in force.
+SchemeParams honeycomb_defaults(SchemeParams p) {
+  const HoneycombParams defaults;
+  if (p.count("a") && (p.count("a0") || p.count("a1"))) {
+    throw InvalidArgument(
+        "honeycomb: give either parameter a (constant tension) or a0/a1 (a = a0 + a1/N), not both");
+  }
+  p.try_emplace("t", defaults.t);
+  if (!p.count("a")) {
+    p.try_emplace("a0", defaults.a0);
+    p.try_emplace("a1", defaults.a1);
+  }
+  honeycomb_params(p);  // type checks
+  return p;
+}
+
+}  // namespace
+
+std::vector<SchemeEntry> classic_scheme_entries() {
+  // Schemes without parameters accept none.
+  const auto no_params = [](SchemeParams p) { return p; };
+  return {
+      {"catmull-clark", {}, no_params, [](const Mesh& m, const SchemeParams&) { return catmull_clark(m); }},
+      {"honeycomb",
+       {"t", "a", "a0", "a1"},
+       honeycomb_defaults,
+       [](const Mesh& m, const SchemeParams& p) { return honeycomb(m, honeycomb_params(p)); }},
+  };
+}
+
+}  // namespace dlfl::detail
