@@ -2,8 +2,13 @@
 
 #include "dlfl/errors.h"
 #include "schemes/catmull_clark.h"
+#include "schemes/doo_sabin.h"
+#include "schemes/dual.h"
+#include "schemes/dual_honeycomb_dual.h"
 #include "schemes/honeycomb.h"
+#include "schemes/loop.h"
 #include "schemes/registry_entry.h"
+#include "schemes/sqrt3.h"
 
 namespace dlfl::detail {
 namespace {
@@ -44,6 +49,14 @@ std::vector<SchemeEntry> classic_scheme_entries() {
        {"t", "a", "a0", "a1"},
        honeycomb_defaults,
        [](const Mesh& m, const SchemeParams& p) { return honeycomb(m, honeycomb_params(p)); }},
+      {"doo-sabin", {}, no_params, [](const Mesh& m, const SchemeParams&) { return doo_sabin(m); }},
+      {"loop", {}, no_params, [](const Mesh& m, const SchemeParams&) { return loop(m); }},
+      {"sqrt3", {}, no_params, [](const Mesh& m, const SchemeParams&) { return sqrt3(m); }},
+      {"dual", {}, no_params, [](const Mesh& m, const SchemeParams&) { return dual(m); }},
+      {"dual-honeycomb-dual",
+       {"t", "a", "a0", "a1"},
+       honeycomb_defaults,
+       [](const Mesh& m, const SchemeParams& p) { return dual_honeycomb_dual(m, honeycomb_params(p)); }},
   };
 }
 
