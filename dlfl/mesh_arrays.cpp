@@ -1,5 +1,7 @@
 #include "dlfl/mesh_arrays.h"
 
+#include <cmath>
+
 #include "dlfl/errors.h"
 #include "dlfl/validate.h"
 
@@ -21,7 +23,8 @@ MeshArrays MeshArrays::from(const Mesh& m) {
   a.faces.resize(m.face_capacity());
   for (std::uint32_t i = 0; i < m.face_capacity(); ++i) {
     const auto& f = m.faces_[i];
-    a.faces[i] = {f.corner, f.size, f.alive, f.hole};
+    a.faces[i] = {f.corner, f.size, f.alive, f.hole, std::nullopt};
+    if (!m.face_points_.empty() && !std::isnan(m.face_points_[i].x)) a.faces[i].point = m.face_points_[i];
   }
   return a;
 }
@@ -74,6 +77,12 @@ Mesh MeshArrays::to_mesh() const {
     }
     m.faces_[i] = {f.corner, f.size, f.alive, f.hole};
     m.live_faces_ += f.alive;
+    if (f.point) {
+      if (!std::isfinite(f.point->x) || !std::isfinite(f.point->y) || !std::isfinite(f.point->z))
+        fail(to_string(FaceId(std::uint32_t(i))) + " has a control point that is not finite");
+      if (m.face_points_.empty()) m.face_points_.assign(nf, glm::dvec3(std::nan(""), 0.0, 0.0));
+      m.face_points_[i] = *f.point;
+    }
   }
   const ValidationReport report = validate(m, 1);
   if (!report.valid()) {

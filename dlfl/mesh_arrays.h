@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <optional>
 #include <vector>
 
 #include "dlfl/mesh.h"
@@ -34,6 +35,7 @@ struct MeshArrays {
     std::uint32_t size = 0;
     bool alive = false;
     bool hole = false;
+    std::optional<glm::dvec3> point;  ///< the face's control point, if set (see Mesh::face_point)
   };
   std::vector<Vertex> vertices;
   std::vector<Corner> corners;

@@ -56,6 +56,11 @@ std::string mesh_hash(const Mesh& m) {
   for (FaceId f : m.faces()) {
     d.add(pair(f.index(), m.first_corner(f).index()));
     d.add(pair(m.size(f), m.is_hole(f)));
+    if (const auto q = m.face_point(f)) {  // only set points count, so meshes without any hash as before
+      d.add(q->x);
+      d.add(q->y);
+      d.add(q->z);
+    }
   }
   for (CornerId c : m.corners()) {
     d.add(pair(c.index(), m.vertex(c).index()));

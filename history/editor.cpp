@@ -1,5 +1,7 @@
 #include "history/editor.h"
 
+#include <cmath>
+
 #include "dlfl/errors.h"
 #include "io/json_mesh.h"
 #include "io/mesh_io.h"
@@ -137,6 +139,15 @@ void Editor::set_position(VertexId v, const glm::dvec3& position) {
   s.vertex = v;
   s.position = position;
   run(s, {{"op", "set_position"}, {"vertex", v.index()}, {"position", point(position)}});
+}
+
+void Editor::set_face_point(FaceId f, const std::optional<glm::dvec3>& control) {
+  Step s{Step::Kind::set_face_point};
+  s.face = f;
+  s.position = control ? *control : glm::dvec3(std::nan(""), 0.0, 0.0);  // a NaN x clears
+  run(s, {{"op", "set_face_point"},
+          {"face", f.index()},
+          {"position", control ? point(*control) : nlohmann::json()}});
 }
 
 FaceManifold Editor::create_face_manifold(std::span<const glm::dvec3> positions, std::span<VertexId> vertices,

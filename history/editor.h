@@ -59,6 +59,10 @@ class Editor {
   VertexId subdivide_edge(EdgeId e, const glm::dvec3& position);
   void unsubdivide_edge(VertexId v);
   void set_position(VertexId v, const glm::dvec3& position);
+  /// Sets a face's control point (the central control vertex of the Zhang-Wang honeycomb scheme), or clears
+  /// it with `std::nullopt`, as one undoable entry. Throws InvalidArgument for a removed face or a non-finite
+  /// point.
+  void set_face_point(FaceId f, const std::optional<glm::dvec3>& point);
   /// CREATEFACEMANIFOLD as one undoable entry; `vertices`, `front_corners`, `back_corners` as in the free
   /// function.
   FaceManifold create_face_manifold(std::span<const glm::dvec3> positions, std::span<VertexId> vertices = {},

@@ -92,6 +92,14 @@ nlohmann::json mesh_to_json(const Mesh& mesh) {
   for (const auto& f : a.faces) {
     faces.push_back(f.alive ? nlohmann::json{handle(f.corner), f.size, f.hole ? 1 : 0} : nlohmann::json());
   }
+  // Control points only when the mesh has any, so documents of meshes without them stay as they were.
+  if (mesh.has_face_points()) {
+    auto& points = doc["face_points"] = nlohmann::json::array();
+    for (const auto& f : a.faces) {
+      points.push_back(f.alive && f.point ? nlohmann::json{f.point->x, f.point->y, f.point->z}
+                                          : nlohmann::json());
+    }
+  }
   return doc;
 }
 
@@ -141,7 +149,22 @@ Mesh mesh_from_json(const nlohmann::json& doc, const std::string& name) {
         r.fail("faces[" + std::to_string(i) + "][1]", "expected a face size");
       }
       a.faces[i] = {r.handle_at<CornerId>(*e, 0, "faces", i),
-                    static_cast<std::uint32_t>(size.get<long long>()), true, (*e)[2] != 0};
+                    static_cast<std::uint32_t>(size.get<long long>()), true, (*e)[2] != 0, std::nullopt};
+    }
+  }
+  if (auto points = doc.find("face_points"); points != doc.end()) {
+    if (!points->is_array() || points->size() != faces.size()) {
+      r.fail("face_points", "expected an array with one entry per face slot");
+    }
+    for (std::size_t i = 0; i < points->size(); ++i) {
+      const auto& e = (*points)[i];
+      if (e.is_null()) continue;
+      const std::string field = "face_points[" + std::to_string(i) + "]";
+      if (!a.faces[i].alive) r.fail(field, "a removed face has no control point");
+      if (!e.is_array() || e.size() != 3 || !e[0].is_number() || !e[1].is_number() || !e[2].is_number()) {
+        r.fail(field, "expected [x, y, z] or null");
+      }
+      a.faces[i].point = glm::dvec3(e[0].get<double>(), e[1].get<double>(), e[2].get<double>());
     }
   }
   try {

@@ -122,6 +122,13 @@ void replay_op(Editor& editor, const nlohmann::json& op, std::size_t index, cons
     } else if (kind == "set_position") {
       const VertexId v = r.handle<VertexId>("vertex", "vertex");
       editor.set_position(v, r.point("position"));
+    } else if (kind == "set_face_point") {
+      const FaceId f = r.handle<FaceId>("face", "face");
+      if (r.get("position").is_null()) {
+        editor.set_face_point(f, std::nullopt);
+      } else {
+        editor.set_face_point(f, r.point("position"));
+      }
     } else if (kind == "create_face_manifold") {
       const auto& pts = r.get("positions");
       if (!pts.is_array()) r.fail("positions", "expected an array of [x, y, z]");

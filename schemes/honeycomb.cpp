@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "dlfl/create_face_manifold.h"
 #include "dlfl/errors.h"
+#include "schemes/honeycomb_remesh.h"
 
 namespace dlfl {
 namespace {
@@ -121,43 +121,20 @@ Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p) {
   const FaceSummary s = summarize(mesh);
   check_params(s, p);
 
-  // Exact final capacities, tombstones included. CREATEFACEMANIFOLD of N points appends N vertices, N edges,
-  // 2N corners (N from create_vertex, none for the first insert_edge between two point spheres, one for each
-  // of the next N - 2, two for the closing one) and N + 1 faces (N point spheres, N - 1 of them merged away,
-  // plus the one the closing split creates). Step 2 appends per edge 2 corners, 1 edge, and 1 face if it
-  // splits. From 2F faces the merges and splits end at F + V, so splits - merges = V - F and
-  // splits + merges = E.
-  const std::size_t C = s.polygon_corners, F = s.polygon_faces, P = s.point_spheres;
-  const std::size_t E = mesh.num_edges();
-  const std::size_t V = mesh.num_vertices() - std::min(P, mesh.num_vertices());
-  const std::size_t splits = E + V >= F ? (E + V - F) / 2 : 0;
-  Mesh result;
-  result.reserve(C + P, C + E, C + F + splits + P, 2 * C + 2 * E + P);
-
-  // Old corner -> back corner of the new vertex made for it (the vertex v'_n for corner c_n and edge e_n).
-  std::vector<CornerId> back_of(mesh.corner_capacity());
   const std::size_t max_n = s.max_size;
-  std::vector<glm::dvec3> edge_points(max_n), new_points(max_n);
-  std::vector<CornerId> old_corners(max_n), back_corners(max_n);
+  std::vector<glm::dvec3> edge_points(max_n);
   std::vector<double> cosines(max_n > direct_max ? max_n : 0), sines(cosines.size());
   WeightTable table(p);
   const double t = p.t;
 
-  // Step 1: a face manifold per face.
-  for (FaceId f : mesh.faces()) {
-    const std::uint32_t N = mesh.size(f);
-    if (N == 1) {
-      result.create_vertex(mesh.position(mesh.vertex(mesh.first_corner(f))));
-      continue;
-    }
-    std::uint32_t i = 0;
-    for (CornerId c : mesh.corners(f)) old_corners[i++] = c;
+  const auto face_points = [&](FaceId, std::span<const CornerId> corners, std::span<glm::dvec3> new_points) {
+    const auto N = std::uint32_t(corners.size());
     // Work relative to v_0: the weights sum to 1, and small differences keep precision far from the origin.
-    const glm::dvec3 origin = mesh.position(mesh.vertex(old_corners[0]));
+    const glm::dvec3 origin = mesh.position(mesh.vertex(corners[0]));
     glm::dvec3 d_first(0.0), d = d_first;
-    for (i = 0; i < N; ++i) {
+    for (std::uint32_t i = 0; i < N; ++i) {
       const glm::dvec3 d_next =
-          i + 1 < N ? mesh.position(mesh.vertex(old_corners[i + 1])) - origin : d_first;  // v_{i+1} - v_0
+          i + 1 < N ? mesh.position(mesh.vertex(corners[i + 1])) - origin : d_first;  // v_{i+1} - v_0
       edge_points[i] = (1.0 - t) * d + t * d_next;  // formula (1): the point on edge e_i
       d = d_next;
     }
@@ -169,38 +146,28 @@ Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p) {
         for (std::uint32_t m = 0; m < N; ++m) sum += w[n >= m ? n - m : n + N - m] * edge_points[m];
         new_points[n] = origin + sum;
       }
-    } else {
-      // sum_{m != n} (3 + 2 cos(theta (n - m))) p_m = 3 P + 2 (cos(theta n) Cs + sin(theta n) Sn) - 5 p_n,
-      // with P = sum p_m, Cs = sum cos(theta m) p_m, Sn = sum sin(theta m) p_m, theta = 2 pi / N.
-      const double a = honeycomb_tension(p, int(N));
-      const double scale = (1.0 - a) / (3.0 * double(N) - 5.0);
-      glm::dvec3 total(0.0), cos_sum(0.0), sin_sum(0.0);
-      for (std::uint32_t m = 0; m < N; ++m) {
-        const double angle = 2.0 * std::numbers::pi * double(m) / double(N);
-        cosines[m] = std::cos(angle);
-        sines[m] = std::sin(angle);
-        total += edge_points[m];
-        cos_sum += cosines[m] * edge_points[m];
-        sin_sum += sines[m] * edge_points[m];
-      }
-      for (std::uint32_t n = 0; n < N; ++n) {
-        const glm::dvec3 rest =
-            3.0 * total + 2.0 * (cosines[n] * cos_sum + sines[n] * sin_sum) - 5.0 * edge_points[n];
-        new_points[n] = origin + (a * edge_points[n] + scale * rest);
-      }
+      return;
     }
-    const FaceManifold fm = create_face_manifold(result, std::span<const glm::dvec3>(new_points.data(), N),
-                                                 {}, {}, std::span<CornerId>(back_corners.data(), N));
-    if (mesh.is_hole(f)) result.set_hole(fm.front, true);
-    for (i = 0; i < N; ++i) back_of[old_corners[i].index()] = back_corners[i];
-  }
-
-  // Step 2: join the two new vertices of each edge, across the edge, through their back corners. Each back
-  // corner keeps its vertex and outgoing edge through every insert_edge, so the map stays valid.
-  for (EdgeId e : mesh.edges()) {
-    result.insert_edge(back_of[mesh.corner(e, 0).index()], back_of[mesh.corner(e, 1).index()]);
-  }
-  return result;
+    // sum_{m != n} (3 + 2 cos(theta (n - m))) p_m = 3 P + 2 (cos(theta n) Cs + sin(theta n) Sn) - 5 p_n,
+    // with P = sum p_m, Cs = sum cos(theta m) p_m, Sn = sum sin(theta m) p_m, theta = 2 pi / N.
+    const double a = honeycomb_tension(p, int(N));
+    const double scale = (1.0 - a) / (3.0 * double(N) - 5.0);
+    glm::dvec3 total(0.0), cos_sum(0.0), sin_sum(0.0);
+    for (std::uint32_t m = 0; m < N; ++m) {
+      const double angle = 2.0 * std::numbers::pi * double(m) / double(N);
+      cosines[m] = std::cos(angle);
+      sines[m] = std::sin(angle);
+      total += edge_points[m];
+      cos_sum += cosines[m] * edge_points[m];
+      sin_sum += sines[m] * edge_points[m];
+    }
+    for (std::uint32_t n = 0; n < N; ++n) {
+      const glm::dvec3 rest =
+          3.0 * total + 2.0 * (cosines[n] * cos_sum + sines[n] * sin_sum) - 5.0 * edge_points[n];
+      new_points[n] = origin + (a * edge_points[n] + scale * rest);
+    }
+  };
+  return detail::honeycomb_remesh(mesh, face_points, false).mesh;
 }
 
 }  // namespace dlfl

@@ -9,6 +9,7 @@
 #include "schemes/loop.h"
 #include "schemes/registry_entry.h"
 #include "schemes/sqrt3.h"
+#include "schemes/zhang_wang_honeycomb.h"
 
 namespace dlfl::detail {
 namespace {
@@ -38,6 +39,36 @@ SchemeParams honeycomb_defaults(SchemeParams p) {
   return p;
 }
 
+// The tension a of honeycomb-zw is a number, or "symmetric" for the paper's a_n = (4 - cos(2 pi / n)) / 9.
+constexpr const char* zw_symmetric = "symmetric";
+
+ZhangWangParams zhang_wang_params(const SchemeParams& p) {
+  ZhangWangParams z;
+  if (auto it = p.find("a"); it != p.end()) {
+    const auto* text = std::get_if<std::string>(&it->second);
+    if (!text) {
+      z.a = std::get<double>(it->second);
+    } else if (*text != zw_symmetric) {
+      throw InvalidArgument("honeycomb-zw: parameter a must be a number or 'symmetric', not '" + *text + "'");
+    }
+  }
+  if (p.count("b")) z.b = number(p, "honeycomb-zw", "b");
+  if (p.count("c")) z.c = number(p, "honeycomb-zw", "c");
+  if (p.count("alpha")) z.alpha = number(p, "honeycomb-zw", "alpha");
+  check_zhang_wang_params(z);
+  return z;
+}
+
+SchemeParams zhang_wang_defaults(SchemeParams p) {
+  const ZhangWangParams defaults;
+  p.try_emplace("a", std::string(zw_symmetric));
+  p.try_emplace("b", defaults.b);
+  p.try_emplace("c", defaults.c);
+  p.try_emplace("alpha", defaults.alpha);
+  zhang_wang_params(p);  // type and range checks
+  return p;
+}
+
 }  // namespace
 
 std::vector<SchemeEntry> classic_scheme_entries() {
@@ -49,6 +80,10 @@ std::vector<SchemeEntry> classic_scheme_entries() {
        {"t", "a", "a0", "a1"},
        honeycomb_defaults,
        [](const Mesh& m, const SchemeParams& p) { return honeycomb(m, honeycomb_params(p)); }},
+      {"honeycomb-zw",
+       {"a", "b", "c", "alpha"},
+       zhang_wang_defaults,
+       [](const Mesh& m, const SchemeParams& p) { return zhang_wang_honeycomb(m, zhang_wang_params(p)); }},
       {"doo-sabin", {}, no_params, [](const Mesh& m, const SchemeParams&) { return doo_sabin(m); }},
       {"loop", {}, no_params, [](const Mesh& m, const SchemeParams&) { return loop(m); }},
       {"sqrt3", {}, no_params, [](const Mesh& m, const SchemeParams&) { return sqrt3(m); }},
