@@ -51,7 +51,7 @@ void check_zhang_wang_params(const ZhangWangParams& p) {
   check_unit("alpha", p.alpha);
 }
 
-Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p) {
+Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombOrigin* origin) {
   check_zhang_wang_params(p);
 
   // The CCV of every input face: its control point, or its centroid.
@@ -97,6 +97,10 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p) {
     const glm::dvec3 average =
         (p.alpha * neighbour_sum[v.index()] + (1.0 - p.alpha) * ccv_sum[v.index()]) / double(n);
     result.set_face_point(out.face_of_vertex[v.index()], (1.0 - p.c) * mesh.position(v) + p.c * average);
+  }
+  if (origin) {
+    origin->face_of_face = std::move(out.face_of_face);
+    origin->face_of_vertex = std::move(out.face_of_vertex);
   }
   return std::move(out.mesh);
 }
