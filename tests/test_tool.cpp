@@ -13,6 +13,8 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "schemes/registry.h"
+
 namespace {
 
 // CTest runs each test case as its own process, in parallel: every process gets its own directory, so
@@ -188,5 +190,26 @@ TEST_CASE("tool: convert of a malformed input names the line and writes nothing"
   std::ifstream in(out);
   std::string content((std::istreambuf_iterator<char>(in)), {});
   CHECK(content == "old content");  // the existing file is untouched
+}
+
+TEST_CASE("tool: every registered scheme subdivides the tetrahedron into a valid mesh") {
+  // The tetrahedron is a triangle mesh (Loop, sqrt3), closed (dual), convex with its centroid inside
+  // (Meng-Prautzsch): every scheme must accept it. One step never loses faces or vertices.
+  for (const std::string& scheme : dlfl::scheme_names()) {
+    CAPTURE(scheme);
+    const auto out = scratch("scheme.json");
+    Run r = run("subdivide " + example("tetrahedron.off") + " -s " + scheme + " -o '" + out.string() + "'");
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.err.empty());
+    Run check = run("check '" + out.string() + "'");
+    CHECK(check.exit_code == 0);
+    Run info = run("info '" + out.string() + "'");
+    REQUIRE(info.exit_code == 0);
+    const auto doc = nlohmann::json::parse(info.out);
+    CHECK(doc["valid"] == true);
+    CHECK(doc["genus"] == nlohmann::json::array({0}));
+    CHECK(doc["faces"].get<int>() >= 4);
+    CHECK(doc["vertices"].get<int>() >= 4);
+  }
 }
 #endif
