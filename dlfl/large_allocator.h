@@ -1,16 +1,14 @@
 #pragma once
 // An allocator for the mesh's element arrays: blocks of 2 MiB and more are aligned to 2 MiB and marked for
 // transparent huge pages. The operators chase links across arrays of hundreds of megabytes; with 4 KiB pages
-// nearly every hop is a TLB miss, with 2 MiB pages almost none. Small blocks use the ordinary heap.
+// nearly every hop is a TLB miss, with 2 MiB pages almost none. Large blocks go through a cache of freed
+// blocks (dlfl/block_cache.h), so they come back already mapped. Small blocks use the ordinary heap.
 
 #include <cstddef>
-#include <cstdlib>
 #include <new>
 #include <vector>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
+#include "dlfl/block_cache.h"
 
 namespace dlfl::detail {
 
@@ -26,21 +24,17 @@ struct LargeAllocator {
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < huge) return static_cast<T*>(::operator new(bytes));
-    const std::size_t rounded = (bytes + huge - 1) / huge * huge;
-    void* p = std::aligned_alloc(huge, rounded);
-    if (!p) throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    ::madvise(p, rounded, MADV_HUGEPAGE);  // a hint; ignored where unsupported
-#endif
-    return static_cast<T*>(p);
+    return static_cast<T*>(acquire_block(rounded(bytes)));
   }
   void deallocate(T* p, std::size_t n) {
-    if (n * sizeof(T) < huge) {
+    const std::size_t bytes = n * sizeof(T);
+    if (bytes < huge) {
       ::operator delete(p);
     } else {
-      std::free(p);
+      release_block(p, rounded(bytes));
     }
   }
+  static std::size_t rounded(std::size_t bytes) { return (bytes + huge - 1) / huge * huge; }
   template <class U>
   bool operator==(const LargeAllocator<U>&) const {
     return true;

@@ -57,12 +57,6 @@ Mesh MeshAssembler::finish() {
     if (t >= nc || twin_[t] != k || t == k) {
       throw InvalidArgument("MeshAssembler: the twin of corner " + std::to_string(k) + " does not pair back");
     }
-    // Twins run opposite ways along one edge: each starts where the other's edge ends.
-    const VertexId next_of_t = m.corners_[m.corners_[t].next.index()].vertex;
-    if (next_of_t != m.corners_[k].vertex) {
-      throw InvalidArgument("MeshAssembler: corners " + std::to_string(k) + " and " + std::to_string(t) +
-                            " are twins but do not run along one edge in opposite directions");
-    }
     if (t < k) continue;  // the edge was made at its smaller corner
     const EdgeId e(static_cast<std::uint32_t>(m.edges_.size()));
     m.edges_.push_back({{CornerId(k), CornerId(t)}});

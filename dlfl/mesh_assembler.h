@@ -20,7 +20,8 @@ namespace dlfl {
 /// of their smaller corner, which is the edge's side 0.
 ///
 /// The caller is trusted: `finish()` checks only that twins pair up and that every vertex has a corner
-/// (cheap); run `validate` in tests. Not for general input (use `build_mesh` for polygon soups).
+/// (cheap); that twins run along one edge in opposite directions is left to `validate`, which the tests of
+/// every scheme run. Not for general input (use `build_mesh` for polygon soups).
 class MeshAssembler {
  public:
   /// Faces of any sizes: `offsets` has one entry per face plus a final one equal to the number of corners.
@@ -41,13 +42,12 @@ class MeshAssembler {
   void set_hole(std::uint32_t f, bool hole) { mesh_.faces_[f].hole = hole; }
 
   /// Links faces, creates edges and vertex anchors, and returns the mesh. Throws InvalidArgument if a twin
-  /// does not name its corner back, the two do not run along one edge in opposite directions, or a vertex has
-  /// no corner.
+  /// does not name its corner back or a vertex has no corner.
   Mesh finish();
 
  private:
   Mesh mesh_;
-  std::vector<std::uint32_t> twin_;
+  detail::LargeVector<std::uint32_t> twin_;
 };
 
 /// `mesh` itself when it has no removed elements (handles are dense: 0 .. count-1), else a compacted copy

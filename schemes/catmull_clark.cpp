@@ -24,7 +24,7 @@ Mesh catmull_clark(const Mesh& input) {
   MeshAssembler out(std::size_t(nv) + ne + nf, nc, 4);
 
   // Face points.
-  std::vector<glm::dvec3> face_point(nf);
+  detail::LargeVector<glm::dvec3> face_point(nf);
   for (std::uint32_t f = 0; f < nf; ++f) {
     glm::dvec3 sum(0.0);
     for (CornerId c : m.corners(FaceId(f))) sum += m.position(m.vertex(c));
@@ -41,8 +41,8 @@ Mesh catmull_clark(const Mesh& input) {
   // Vertex points: (Q + 2R + (n-3) S) / n = (sum of face points + 2 sum of midpoints) / n^2 + (n-3) S / n.
   // Each corner at v contributes its face's point and the midpoint of its outgoing edge (each edge at v
   // leaves v at exactly one corner).
-  std::vector<glm::dvec3> sums(nv, glm::dvec3(0.0));
-  std::vector<std::uint32_t> valence(nv, 0);
+  detail::LargeVector<glm::dvec3> sums(nv, glm::dvec3(0.0));
+  detail::LargeVector<std::uint32_t> valence(nv, 0);
   for (std::uint32_t k = 0; k < nc; ++k) {
     const CornerId c(k);
     const std::uint32_t v = m.vertex(c).index();
