@@ -3,62 +3,15 @@
 #include <doctest/doctest.h>
 
 #ifdef DLFL_TOOL
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <array>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include "schemes/registry.h"
+#include "tool_runner.h"
 
-namespace {
-
-// CTest runs each test case as its own process, in parallel: every process gets its own directory, so
-// no two of them share a captured stderr or an output file.
-std::filesystem::path scratch_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / ("dlfl_tool_test_" + std::to_string(getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
-}
-
-struct Run {
-  int exit_code;
-  std::string out;
-  std::string err;
-};
-
-// Runs the tool with arguments (already shell-quoted where needed), capturing stdout and stderr.
-Run run(const std::string& args) {
-  const auto err_path = scratch_dir() / "stderr.txt";
-  const std::string cmd = std::string("'") + DLFL_TOOL + "' " + args + " 2>'" + err_path.string() + "'";
-  Run r{};
-  FILE* p = popen(cmd.c_str(), "r");
-  REQUIRE(p != nullptr);
-  std::array<char, 4096> buf;
-  std::size_t n;
-  while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int status = pclose(p);
-  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-  std::ifstream e(err_path);
-  r.err.assign(std::istreambuf_iterator<char>(e), {});
-  return r;
-}
-
-std::string example(const char* name) {
-  return std::string("'") + DLFL_SOURCE_DIR + "/examples/" + name + "'";
-}
-
-std::filesystem::path scratch(const char* name) {
-  const auto dir = scratch_dir();
-  std::filesystem::remove(dir / name);
-  return dir / name;
-}
-
-}  // namespace
+using namespace dlfl::test;
 
 TEST_CASE("tool: info on the cube reports the hand-counted figures") {
   Run r = run("info " + example("cube.obj"));
