@@ -80,6 +80,41 @@ TEST_CASE("tool: a failed convert leaves no output file") {
   CHECK(wrong_ext.exit_code == 1);
   CHECK_FALSE(std::filesystem::exists(scratch("cube.xyz")));
 }
+TEST_CASE("tool: every kind of bad input file gets one located error line and leaves the output alone") {
+  // Each case: file name, content, and the "file:line:" prefix the error must carry (line 0: none).
+  const std::string tetra = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\n";
+  struct Case {
+    std::string name;
+    std::string content;
+    int line;
+  };
+  const Case cases[] = {
+      {"range.obj", tetra + "f 1 2 5\n", 5},                              // index out of range
+      {"repeat.obj", tetra + "f 1 2 2\n", 5},                             // a vertex twice in a row
+      {"direction.obj", tetra + "f 1 2 3\nf 1 2 4\n", 6},                 // an edge twice in one direction
+      {"bowtie.obj", tetra + "v 1 1 0\nv 2 0 0\nf 1 2 3\nf 1 5 6\n", 1},  // non-manifold vertex 1
+      {"nan.obj", "v 0 0 0\nv nan 0 0\n", 2},                             // not finite
+      {"short.off", "OFF\n4 1 0\n0 0 0\n1 0 0\n", 4},  // truncated: located at its last line
+  };
+  for (const Case& c : cases) {
+    CAPTURE(c.name);
+    const auto in = scratch(c.name.c_str());
+    std::ofstream(in) << c.content;
+    const auto out = scratch("out.ply");
+    Run r = run("convert '" + in.string() + "' '" + out.string() + "'");
+    CHECK(r.exit_code == 1);
+    CHECK(r.err.rfind("error: ", 0) == 0);
+    CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
+    CHECK(r.err.find(in.string() + ":" + std::to_string(c.line) + ":") != std::string::npos);
+    CHECK_FALSE(std::filesystem::exists(out));
+    // An existing output file is not touched either.
+    std::ofstream(out) << "keep";
+    CHECK(run("convert '" + in.string() + "' '" + out.string() + "'").exit_code == 1);
+    std::ifstream kept(out);
+    CHECK(std::string(std::istreambuf_iterator<char>(kept), {}) == "keep");
+  }
+}
+
 TEST_CASE("tool: subdivide writes the honeycomb and a log that replays to the same mesh") {
   const auto out = scratch("dodeca2.json");
   const auto log = scratch("dodeca2.log.json");
