@@ -201,3 +201,10 @@ TEST_CASE("doo-sabin: point spheres and valence-1 vertices are refused, naming t
   m.compact();
   CHECK(error_message<TopologyError>([&] { doo_sabin(m); }).find("v8 has valence 1") != std::string::npos);
 }
+
+TEST_CASE("doo-sabin: through the editor, its undo and the log") {
+  Mesh sphere = test::cube();
+  sphere.create_vertex({5, 5, 5});
+  const Mesh in = build_mesh(torus_soup(4, 3));
+  check_editor_and_log(in, "doo-sabin", {}, doo_sabin(doo_sabin(in)), sphere);
+}

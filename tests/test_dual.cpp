@@ -102,3 +102,8 @@ TEST_CASE("dual: holes, point spheres and edges with one face on both sides are 
   CHECK(error_message<TopologyError>([&] { dual(m); }) ==
         "dual: " + to_string(r.edge) + " has the same face on both sides (its dual would be a self-loop)");
 }
+
+TEST_CASE("dual: through the editor, its undo and the log") {
+  const Mesh in = test::mixed_polyhedron();
+  check_editor_and_log(in, "dual", {}, dual(dual(in)), build_mesh(grid_soup(2, 1)));
+}

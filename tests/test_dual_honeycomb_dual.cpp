@@ -218,3 +218,16 @@ TEST_CASE("dual-honeycomb-dual: holes, point spheres and bad tensions are refuse
   constant.a = 0.5;
   CHECK(validate(dual_honeycomb_dual(m, constant)).valid());
 }
+
+TEST_CASE("dual-honeycomb-dual: through the editor, its undo and the log, with the honeycomb's parameters") {
+  const Mesh in = build_mesh(torus_soup(4, 3));
+  HoneycombParams p;
+  p.t = 0.4;
+  p.a = 0.7;
+  check_editor_and_log(in, "dual-honeycomb-dual", {{"t", 0.4}, {"a", 0.7}},
+                       dual_honeycomb_dual(dual_honeycomb_dual(in, p), p), build_mesh(grid_soup(2, 1)));
+  // Ranges are checked against the mesh when the step runs (the tension's range depends on the face sizes).
+  CHECK_THROWS_WITH_AS(apply_scheme(in, "dual-honeycomb-dual", {{"t", 2.0}}),
+                       doctest::Contains("dual-honeycomb-dual: honeycomb: parameter t = 2 is outside [0, 1]"),
+                       InvalidArgument);
+}

@@ -176,3 +176,8 @@ TEST_CASE("loop: non-triangles, larger holes and point spheres are refused, nami
   sphere.create_vertex({3, 3, 3});
   CHECK(error_message<TopologyError>([&] { loop(sphere); }) == "loop: v4 is a point sphere (no edge)");
 }
+
+TEST_CASE("loop: through the editor, its undo and the log") {
+  const Mesh in = build_mesh(icosahedron_soup());
+  check_editor_and_log(in, "loop", {}, loop(loop(in)), test::cube());
+}

@@ -170,3 +170,8 @@ TEST_CASE("sqrt3: non-triangles, every hole and point spheres are refused, namin
   sphere.create_vertex({3, 3, 3});
   CHECK(error_message<TopologyError>([&] { sqrt3(sphere); }) == "sqrt3: v4 is a point sphere (no edge)");
 }
+
+TEST_CASE("sqrt3: through the editor, its undo and the log") {
+  const Mesh in = build_mesh(triangulated(torus_soup(4, 3)));
+  check_editor_and_log(in, "sqrt3", {}, sqrt3(sqrt3(in)), test::cube());
+}

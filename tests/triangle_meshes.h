@@ -16,7 +16,10 @@
 #include "dlfl/mesh.h"
 #include "dlfl/polygon_soup.h"
 #include "dlfl/validate.h"
+#include "history/editor.h"
+#include "io/oplog.h"
 #include "scheme_meshes.h"
+#include "schemes/registry.h"
 #include "test_meshes.h"
 
 namespace dlfl::test {
@@ -179,6 +182,31 @@ std::string error_message(F&& f) {
     return e.what();
   }
   return {};
+}
+
+/// The scheme through the editor and the log, as `dlfl subdivide -s NAME` runs it: two steps equal
+/// `expected` (the scheme's function applied twice), undo gives the input back exactly, redo the result, the
+/// log replays to an equal mesh, and a step the scheme refuses (on `refused`) leaves the editor unchanged.
+inline void check_editor_and_log(const Mesh& in, const std::string& scheme, const SchemeParams& params,
+                                 const Mesh& expected, const Mesh& refused) {
+  Editor ed;
+  ed.set_mesh(in);
+  ed.subdivide(scheme, params, 2);
+  CHECK(ed.mesh() == expected);
+  CHECK(ed.undo());  // both steps are one entry
+  CHECK(ed.mesh() == in);
+  CHECK(ed.redo());
+  CHECK(ed.mesh() == expected);
+  CHECK(replay_log(ed.log()).mesh() == expected);
+  Editor bad;
+  bad.set_mesh(refused);
+  CHECK_THROWS_AS(bad.subdivide(scheme, params), Error);
+  CHECK(bad.mesh() == refused);
+  CHECK(bad.undo());  // only the set_mesh entry
+  CHECK_FALSE(bad.can_undo());
+  // No scheme here takes a parameter named "x".
+  CHECK_THROWS_WITH_AS(resolve_scheme_params(scheme, {{"x", 1.0}}),
+                       doctest::Contains((scheme + ": unknown parameter 'x'").c_str()), InvalidArgument);
 }
 
 }  // namespace dlfl::test
