@@ -61,6 +61,7 @@ TEST_CASE("doo-sabin: counts, sizes, valences and genus on meshes of several gen
   cube.subdivide_edge(EdgeId(0),
                       0.5 * (cube.position(cube.from(EdgeId(0))) + cube.position(cube.to(EdgeId(0)))));
   check_counts(cube);
+  CHECK(doo_sabin(Mesh{}).empty());
 }
 
 TEST_CASE("doo-sabin: the cube by hand, and the documented output order") {

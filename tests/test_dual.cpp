@@ -23,6 +23,7 @@ TEST_CASE("dual: counts, sizes and valences swap, genus kept, on meshes of sever
     CHECK(valence_histogram(out) == face_size_histogram(in));
     CHECK(signed_volume(out) > 0);  // the test meshes are convex or close to it, and outward
   }
+  CHECK(dual(Mesh{}).empty());
 }
 
 TEST_CASE("dual: the cube by hand, and the documented output order") {

@@ -85,6 +85,7 @@ TEST_CASE("dual-honeycomb-dual: counts, valences and genus on meshes of several 
       CHECK(signed_volume(out) > 0);
     }
   }
+  CHECK(dual_honeycomb_dual(Mesh{}).empty());
 }
 
 TEST_CASE("dual-honeycomb-dual: on a triangle mesh it has the connectivity of sqrt(3), not its positions") {

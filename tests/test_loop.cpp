@@ -18,7 +18,8 @@ namespace {
 
 // V' = V + E, E' = 2E + 3F (halves of old edges plus three inner edges per triangle), F' = 4F triangles;
 // old vertices keep their valence, edge points have 6.
-void check_counts(const Mesh& in) {
+// `solid`: the input encloses a positive volume, and so must the output (orientation kept).
+void check_counts(const Mesh& in, bool solid = true) {
   const Mesh copy = in;
   const Mesh out = loop(in);
   CHECK(in == copy);
@@ -31,7 +32,7 @@ void check_counts(const Mesh& in) {
   std::uint32_t k = 0;
   for (VertexId v : in.vertices()) CHECK(out.valence(VertexId(k++)) == in.valence(v));
   for (; k < V + E; ++k) CHECK(out.valence(VertexId(k)) == 6);
-  CHECK(signed_volume(out) > 0);
+  if (solid) CHECK(signed_volume(out) > 0);
 }
 
 // The rules as published, evaluated from the input's navigation.
@@ -180,4 +181,30 @@ TEST_CASE("loop: non-triangles, larger holes and point spheres are refused, nami
 TEST_CASE("loop: through the editor, its undo and the log") {
   const Mesh in = build_mesh(icosahedron_soup());
   check_editor_and_log(in, "loop", {}, loop(loop(in)), test::cube());
+}
+
+TEST_CASE("loop: the two-triangle pillow (valence 2) by hand, and the empty mesh") {
+  // Two triangles on the same three vertices, back to back: every vertex has valence 2, and both triangles
+  // of an edge have the same third vertex. n = 2: cos(pi) = -1, beta = (5/8 - (1/8)^2) / 2 = 39/128, so a
+  // vertex moves to 25/64 S + 39/128 (sum of its two neighbours); the edge point of ab is 3/8 (a + b) + 1/4
+  // c.
+  PolygonSoup pillow;
+  pillow.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  pillow.add_face({0, 1, 2});
+  pillow.add_face({0, 2, 1});
+  const Mesh in = build_mesh(pillow);
+  check_counts(in, false);
+  const Mesh out = loop(in);
+  for (VertexId v : in.vertices()) {
+    glm::dvec3 others(0.0);
+    for (VertexId w : in.vertices())
+      if (w != v) others += in.position(w);
+    CHECK(close(out.position(v), 25.0 / 64.0 * in.position(v) + 39.0 / 128.0 * others, 1e-15));
+  }
+  for (EdgeId e : in.edges()) {
+    const glm::dvec3 a = in.position(in.from(e)), b = in.position(in.to(e));
+    const glm::dvec3 c = in.position(in.vertex(in.prev(in.corner(e, 0))));
+    CHECK(close(out.position(VertexId(3 + e.index())), 3.0 / 8.0 * (a + b) + 0.25 * c, 1e-15));
+  }
+  CHECK(loop(Mesh{}).empty());
 }

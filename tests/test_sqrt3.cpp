@@ -21,7 +21,8 @@ namespace {
 // V' = V + F, E' = 3E (every old edge flipped, three spokes per triangle: E + 3F = 3E as 3F = 2E),
 // F' = 3F triangles; old vertices keep their valence, face points have 6 (three corners, three flipped
 // edges).
-void check_counts(const Mesh& in) {
+// `solid`: the input encloses a positive volume, and so must the output (orientation kept).
+void check_counts(const Mesh& in, bool solid = true) {
   const Mesh copy = in;
   const Mesh out = sqrt3(in);
   CHECK(in == copy);
@@ -34,7 +35,7 @@ void check_counts(const Mesh& in) {
   std::uint32_t k = 0;
   for (VertexId v : in.vertices()) CHECK(out.valence(VertexId(k++)) == in.valence(v));
   for (; k < V + F; ++k) CHECK(out.valence(VertexId(k)) == 6);
-  CHECK(signed_volume(out) > 0);
+  if (solid) CHECK(signed_volume(out) > 0);
 }
 
 double kobbelt_a(std::size_t n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / double(n))) / 9.0; }
@@ -174,4 +175,23 @@ TEST_CASE("sqrt3: non-triangles, every hole and point spheres are refused, namin
 TEST_CASE("sqrt3: through the editor, its undo and the log") {
   const Mesh in = build_mesh(triangulated(torus_soup(4, 3)));
   check_editor_and_log(in, "sqrt3", {}, sqrt3(sqrt3(in)), test::cube());
+}
+
+TEST_CASE("sqrt3: the two-triangle pillow flips into three edges between its two face points") {
+  // Every old edge of the pillow has the same two triangles on its sides, so all three flipped edges join the
+  // same two face points: parallel edges, which the kernel holds.
+  PolygonSoup pillow;
+  pillow.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  pillow.add_face({0, 1, 2});
+  pillow.add_face({0, 2, 1});
+  const Mesh in = build_mesh(pillow);
+  check_counts(in, false);
+  const Mesh out = sqrt3(in);
+  std::size_t between_face_points = 0;
+  for (EdgeId e : out.edges()) between_face_points += out.from(e).index() >= 3 && out.to(e).index() >= 3;
+  CHECK(between_face_points == 3);
+  // a_2 = (4 + 2) / 9 = 2/3: a vertex moves to S/3 + (1/3)(sum of its two neighbours).
+  const glm::dvec3 sum = in.position(VertexId(0)) + in.position(VertexId(1)) + in.position(VertexId(2));
+  for (VertexId v : in.vertices()) CHECK(close(out.position(v), sum / 3.0, 1e-15));
+  CHECK(sqrt3(Mesh{}).empty());
 }

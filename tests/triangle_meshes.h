@@ -65,7 +65,20 @@ inline PolygonSoup icosahedron_soup() {
   return s;
 }
 
-/// Closed triangle meshes of genus 0 to 3 with valences from 3 to 8.
+/// Both soups in one, the second moved by `offset`: a mesh of two components.
+inline PolygonSoup disjoint_union(const PolygonSoup& a, const PolygonSoup& b, const glm::dvec3& offset) {
+  PolygonSoup u = a;
+  const auto base = static_cast<std::uint32_t>(a.positions.size());
+  for (const auto& p : b.positions) u.positions.push_back(p + offset);
+  for (std::size_t f = 0; f < b.num_faces(); ++f) {
+    std::vector<std::uint32_t> face;
+    for (std::uint32_t k : b.face(f)) face.push_back(base + k);
+    u.add_face(face);
+  }
+  return u;
+}
+
+/// Closed triangle meshes of genus 0 to 3 with valences from 3 to 8, one of two components.
 inline std::vector<PolygonSoup> closed_triangle_soups() {
   return {tetrahedron_soup(),
           octahedron_soup(),
@@ -75,14 +88,22 @@ inline std::vector<PolygonSoup> closed_triangle_soups() {
           triangulated(to_polygons(mixed_polyhedron())),
           triangulated(torus_soup(6, 5)),
           triangulated(genus_soup(2)),
-          triangulated(genus_soup(3))};
+          triangulated(genus_soup(3)),
+          disjoint_union(tetrahedron_soup(), triangulated(torus_soup(5, 4)), {10, 0, 0})};
 }
 
-/// Closed polygon meshes of genus 0 to 3 with faces of 3 to 7 sides.
+/// Closed polygon meshes of genus 0 to 3 with faces of 3 to 7 sides, one of two components.
 inline std::vector<PolygonSoup> closed_polygon_soups() {
-  return {tetrahedron_soup(),         cube_soup(),      dodecahedron_soup(), to_polygons(mixed_polyhedron()),
-          icosahedron_soup(),         torus_soup(7, 5), genus_soup(2),       genus_soup(3),
-          triangulated(genus_soup(1))};
+  return {tetrahedron_soup(),
+          cube_soup(),
+          dodecahedron_soup(),
+          to_polygons(mixed_polyhedron()),
+          icosahedron_soup(),
+          torus_soup(7, 5),
+          genus_soup(2),
+          genus_soup(3),
+          triangulated(genus_soup(1)),
+          disjoint_union(cube_soup(), torus_soup(5, 4), {10, 0, 0})};
 }
 
 inline bool close(const glm::dvec3& a, const glm::dvec3& b, double tol = 1e-12) {
