@@ -148,7 +148,7 @@ int compare_main() {
                                       {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
   for (const auto& f : faces) ico.add_face({f[0], f[1], f[2]});
   compare_root3("icosahedron", build_mesh(ico), 4);
-  compare_root3("torus 16 x 8 (triangles)", torus(16, true), 3);
+  compare_root3("torus 16 x 16 (triangles)", torus(16, true), 3);
   return 0;
 }
 

@@ -108,3 +108,20 @@ TEST_CASE("dual: through the editor, its undo and the log") {
   const Mesh in = test::mixed_polyhedron();
   check_editor_and_log(in, "dual", {}, dual(dual(in)), build_mesh(grid_soup(2, 1)));
 }
+
+#ifdef DLFL_TOOL
+#include <filesystem>
+#include <fstream>
+
+#include "tool_runner.h"
+
+TEST_CASE("dual: the tool refuses an open mesh with one error line naming the hole, and writes nothing") {
+  const auto in = scratch("triangle.obj");
+  std::ofstream(in) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+  const auto out = scratch("dual.obj");
+  const Run r = run("subdivide '" + in.string() + "' -s dual -o '" + out.string() + "'");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err == "error: dual: f1 is a hole: the dual of an open mesh is not defined\n");
+  CHECK_FALSE(std::filesystem::exists(out));
+}
+#endif

@@ -208,3 +208,17 @@ TEST_CASE("loop: the two-triangle pillow (valence 2) by hand, and the empty mesh
   }
   CHECK(loop(Mesh{}).empty());
 }
+
+#ifdef DLFL_TOOL
+#include <filesystem>
+
+#include "tool_runner.h"
+
+TEST_CASE("loop: the tool refuses a quad mesh with one error line naming the face, and writes nothing") {
+  const auto out = scratch("loop.obj");
+  const Run r = run("subdivide " + example("cube.obj") + " -s loop -o '" + out.string() + "'");
+  CHECK(r.exit_code == 1);
+  CHECK(r.err == "error: loop: f0 has 4 corners; Loop subdivision needs triangles\n");
+  CHECK_FALSE(std::filesystem::exists(out));
+}
+#endif
