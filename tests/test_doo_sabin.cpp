@@ -119,8 +119,7 @@ TEST_CASE("doo-sabin: the cube by hand, and the documented output order") {
     CHECK(out_face(k++) == expected);
   }
   CHECK(k == out.num_faces());
-  // The cube's V-faces are the triangles (+-1/2, +-1/2, +-1) ... around each corner: each is the plane
-  // x + y + z = const cut; seen from outside it turns counter-clockwise, so the whole mesh is outward.
+  // All of it turns counter-clockwise seen from outside: the enclosed volume is positive.
   CHECK(signed_volume(out) > 0);
 }
 
