@@ -1,12 +1,17 @@
 // Scheme benchmark: one step of every scheme on a torus sized for about 1M output faces (sqrt(3): two steps,
 // as the reference figure is for two), median and best wall time of repeated runs, beside the reference
 // figures of the fastest established library on this machine (issue 4). Usage: dlfl_bench_schemes [runs=5]
+//
+// `dlfl_bench_schemes compare` instead measures how dual-honeycomb-dual's positions differ from sqrt(3)'s
+// (same connectivity on triangle meshes; docs/schemes.md quotes the figures).
 
 #include <cmath>
 #include <cstdio>
 #include <functional>
+#include <glm/geometric.hpp>
 #include <numbers>
 #include <string>
+#include <vector>
 
 #include "bench_util.h"
 #include "dlfl/build_mesh.h"
@@ -58,9 +63,99 @@ void measure(const char* name, const Mesh& input, int runs, const std::function<
   std::fflush(stdout);
 }
 
+// ---- dual-honeycomb-dual against sqrt(3)
+
+double signed_volume(const Mesh& m) {
+  double volume = 0;
+  for (FaceId f : m.faces()) {
+    const CornerId c = m.first_corner(f);
+    volume += glm::dot(m.position(m.vertex(c)),
+                       glm::cross(m.position(m.vertex(m.next(c))), m.position(m.vertex(m.prev(c))))) /
+              6.0;
+  }
+  return volume;
+}
+
+// Where dual-honeycomb-dual puts the vertex w of `m`: the average of the centroids of its faces (derived in
+// tests/test_dual_honeycomb_dual.cpp); returns the vertex of `next` at that place.
+VertexId follow(const Mesh& m, VertexId w, const Mesh& next) {
+  glm::dvec3 sum(0.0);
+  double n = 0;
+  for (CornerId c : m.corners(w)) {
+    glm::dvec3 centroid(0.0);
+    for (CornerId d : m.corners(m.face(c))) centroid += m.position(m.vertex(d));
+    sum += centroid / double(m.size(m.face(c)));
+    n += 1;
+  }
+  const glm::dvec3 p = sum / n;
+  for (VertexId v : next.vertices()) {
+    if (glm::length(next.position(v) - p) < 1e-12) return v;
+  }
+  return VertexId();
+}
+
+// Steps of both schemes from the same triangle mesh: enclosed volume relative to the input's, and how far
+// apart the two schemes put each input vertex (sqrt(3) keeps it as vertex v; dual-honeycomb-dual's is
+// followed step by step), relative to the input's bounding-box diagonal.
+void compare_root3(const char* name, const Mesh& input, int steps) {
+  glm::dvec3 lo(1e300), hi(-1e300);
+  for (VertexId v : input.vertices()) {
+    lo = glm::min(lo, input.position(v));
+    hi = glm::max(hi, input.position(v));
+  }
+  const double diagonal = glm::length(hi - lo), volume = signed_volume(input);
+  std::printf("%s: V = %zu, F = %zu, volume %.6f, bounding-box diagonal %.6f\n", name, input.num_vertices(),
+              input.num_faces(), volume, diagonal);
+  std::printf(
+      "  step   faces   volume/input: sqrt3   dhd   |  input vertices, sqrt3 vs dhd: mean and max "
+      "distance / diagonal\n");
+  Mesh a = input, b = input;
+  std::vector<VertexId> tracked;
+  for (VertexId v : input.vertices()) tracked.push_back(v);
+  for (int k = 1; k <= steps; ++k) {
+    Mesh next_b = dual_honeycomb_dual(b);
+    for (VertexId& w : tracked) {
+      w = follow(b, w, next_b);
+      if (!w.valid()) {
+        std::printf("  step %d: an input vertex is not where the derivation puts it\n", k);
+        return;
+      }
+    }
+    b = std::move(next_b);
+    a = sqrt3(a);
+    double sum = 0, largest = 0;
+    std::uint32_t i = 0;
+    for (VertexId v : input.vertices()) {
+      (void)v;
+      const double d = glm::length(a.position(VertexId(i)) - b.position(tracked[i])) / diagonal;
+      sum += d;
+      largest = std::max(largest, d);
+      ++i;
+    }
+    std::printf("  %4d %7zu        %.6f  %.6f  |  %.6f  %.6f\n", k, a.num_faces(), signed_volume(a) / volume,
+                signed_volume(b) / volume, sum / double(i), largest);
+  }
+}
+
+int compare_main() {
+  const double p = std::numbers::phi;
+  PolygonSoup ico;
+  ico.positions = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
+                   {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
+  const std::uint32_t faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                      {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                      {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                      {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (const auto& f : faces) ico.add_face({f[0], f[1], f[2]});
+  compare_root3("icosahedron", build_mesh(ico), 4);
+  compare_root3("torus 16 x 16 (triangles)", torus(16, true), 3);
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
+  if (argc > 1 && std::string(argv[1]) == "compare") return compare_main();
   const int runs = argc > 1 ? std::stoi(argv[1]) : 5;
   std::printf("one step of each scheme to about 1M faces, %d runs each\n", runs);
   const double steal = bench::steal_seconds();

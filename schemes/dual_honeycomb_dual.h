@@ -27,7 +27,10 @@ namespace dlfl {
 /// old edges). The positions differ: sqrt(3) keeps the old positions in play (new vertex = triangle centroid,
 /// old vertex relaxed by alpha_n = (4 - 2 cos(2 pi / n)) / 9), while here no input position is used
 /// directly: the points come from face centroids of the first dual, smoothed by the honeycomb's a_{n,m}
-/// coefficient rule on D's faces (one per input vertex), then averaged by the second dual. For example, on a
+/// coefficient rule on D's faces (one per input vertex), then averaged by the second dual. Since the
+/// honeycomb keeps each face's centroid, an input vertex goes to the average of the centroids of its faces
+/// whatever the parameters: on a triangle mesh 1/3 v + 2/3 (average of its neighbours), sqrt(3)'s rule with
+/// alpha_n replaced by 2/3. docs/schemes.md measures the difference. For example, on a
 /// regular tetrahedron centred at the origin an old vertex v moves to v / 9 (sqrt(3): 7 v / 27) and the
 /// vertex of the face opposite v sits at -a v / 9 with the honeycomb tension a of a triangle (sqrt(3):
 /// -v / 3). Unlike sqrt(3), this works on any polygon mesh (always giving triangles).

@@ -75,9 +75,9 @@ void check_triangles(const Mesh& m) {
 // since prev(next(s)) = s, so edge(prev(next(s))) = e. So one pass over the faces fills the inner corners
 // (3c + 1 and the central triangles) and one pass over the edges fills the rest, with the edge points.
 Mesh loop(const Mesh& input) {
+  check_triangles(input);  // on the input, so that errors name its own handles, not compacted ones
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  check_triangles(m);
   const auto nv = static_cast<std::uint32_t>(m.num_vertices());
   const auto ne = static_cast<std::uint32_t>(m.num_edges());
   const auto nf = static_cast<std::uint32_t>(m.num_faces());

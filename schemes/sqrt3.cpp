@@ -72,9 +72,9 @@ void check_triangles(const Mesh& m) {
 // Every output corner is set exactly once (corner 0 and 1 of T(s) for the edge leaving s, corner 2 of T(r)
 // for the edge leaving prev(r)), so one pass over the edges builds the whole connectivity.
 Mesh sqrt3(const Mesh& input) {
+  check_triangles(input);  // on the input, so that errors name its own handles, not compacted ones
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  check_triangles(m);
   const auto nv = static_cast<std::uint32_t>(m.num_vertices());
   const auto ne = static_cast<std::uint32_t>(m.num_edges());
   const auto nf = static_cast<std::uint32_t>(m.num_faces());
@@ -112,7 +112,7 @@ Mesh sqrt3(const Mesh& input) {
     out.set_corner(3 * k1 + 1, f0, 3 * k0 + 1);
   }
 
-  // Vertex points, with a_n / n from a small table for the usual valences.
+  // Vertex points, with a_n from a small table for the usual valences.
   std::array<double, 32> weight_table{};
   for (std::uint32_t n = 1; n < weight_table.size(); ++n) weight_table[n] = sqrt3_alpha(n);
   for (std::uint32_t v = 0; v < nv; ++v) {

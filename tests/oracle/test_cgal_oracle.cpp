@@ -4,19 +4,82 @@
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
 
+#include <cmath>
+#include <numbers>
+
 #include "../scheme_meshes.h"
 #include "../test_meshes.h"
+#include "../triangle_meshes.h"
 #include "cgal_compare.h"
 #include "schemes/catmull_clark.h"
+#include "schemes/doo_sabin.h"
+#include "schemes/loop.h"
+#include "schemes/sqrt3.h"
 
 using namespace dlfl;
 using namespace dlfl::oracle;
 
 namespace {
+
+// Every vertex moved by a different small offset, so that no symmetry of the mesh can hide a wrong weight.
+PolygonSoup perturbed(PolygonSoup soup) {
+  for (std::size_t i = 0; i < soup.positions.size(); ++i) {
+    soup.positions[i] += 0.1 * glm::dvec3(std::sin(7.0 * i), std::cos(3.0 * i), std::sin(5.0 * i + 1));
+  }
+  return soup;
+}
+
 std::vector<PolygonSoup> closed_meshes() {
   return {test::tetrahedron_soup(), test::cube_soup(), test::dodecahedron_soup(), test::torus_soup(6, 5),
           test::genus_soup(2)};
 }
+
+// A heptagonal prism with its bottom cut into a triangle and a hexagon and one side quad into two
+// triangles: faces of 3, 4, 6 and 7 sides, valences 3 to 5. (test::mixed_polyhedron has a vertex of valence
+// 2, whose Doo-Sabin face is a 2-gon, which a polygon list cannot hold.)
+PolygonSoup cut_prism() {
+  PolygonSoup s;
+  for (int z = 0; z < 2; ++z) {
+    for (int i = 0; i < 7; ++i) {
+      const double u = 2 * std::numbers::pi * i / 7;
+      s.positions.push_back({std::cos(u), std::sin(u), z == 0 ? -1.0 : 1.0});
+    }
+  }
+  auto b = [](int i) { return std::uint32_t(i % 7); };
+  auto t = [](int i) { return std::uint32_t(7 + i % 7); };
+  s.add_face({b(0), b(6), b(1)});
+  s.add_face({b(6), b(5), b(4), b(3), b(2), b(1)});
+  s.add_face({t(0), t(1), t(2), t(3), t(4), t(5), t(6)});
+  for (int i = 0; i < 7; ++i) {
+    if (i == 3) {
+      s.add_face({b(3), b(4), t(4)});
+      s.add_face({b(3), t(4), t(3)});
+    } else {
+      s.add_face({b(i), b(i + 1), t(i + 1), t(i)});
+    }
+  }
+  return s;
+}
+
+// Polygon meshes for Doo-Sabin: the above, faces of 3 to 7 sides, and an irregular one.
+std::vector<PolygonSoup> closed_polygon_meshes() {
+  auto meshes = closed_meshes();
+  meshes.push_back(cut_prism());
+  meshes.push_back(perturbed(test::genus_soup(1)));
+  return meshes;
+}
+
+// Triangle meshes for Loop and sqrt(3), of genus 0 to 2, with valences 3 to 8, and an irregular one.
+std::vector<PolygonSoup> closed_triangle_meshes() {
+  return {test::tetrahedron_soup(),
+          test::octahedron_soup(),
+          test::icosahedron_soup(),
+          test::triangulated(test::dodecahedron_soup()),
+          test::triangulated(test::torus_soup(6, 5)),
+          test::triangulated(test::genus_soup(2)),
+          perturbed(test::triangulated(test::genus_soup(1)))};
+}
+
 }  // namespace
 
 TEST_CASE("oracle: catmull-clark agrees with CGAL on closed meshes") {
@@ -25,6 +88,47 @@ TEST_CASE("oracle: catmull-clark agrees with CGAL on closed meshes") {
     SurfaceMesh sm = to_cgal(soup);
     CGAL::Subdivision_method_3::CatmullClark_subdivision(sm, CGAL::parameters::number_of_iterations(2));
     const Mesh ours = catmull_clark(catmull_clark(build_mesh(soup)));
+    require_same(to_polygons(ours), from_cgal(sm));
+  }
+}
+
+TEST_CASE("oracle: doo-sabin agrees with CGAL on closed meshes") {
+  // CGAL's DooSabin_mask_3 uses alpha_0 = (5/n + 1)/4 and alpha_k = (3 + 2 cos(2 pi k / n)) / (4n), our
+  // weights, with the quad case written out as 9/16, 3/16, 1/16, 3/16; its DQQ step makes the same F-, E- and
+  // V-faces.
+  for (const PolygonSoup& soup : closed_polygon_meshes()) {
+    CAPTURE(soup.num_faces());
+    SurfaceMesh sm = to_cgal(soup);
+    CGAL::Subdivision_method_3::DooSabin_subdivision(sm, CGAL::parameters::number_of_iterations(2));
+    const Mesh ours = doo_sabin(doo_sabin(build_mesh(soup)));
+    require_same(to_polygons(ours), from_cgal(sm));
+  }
+}
+
+TEST_CASE("oracle: loop agrees with CGAL on closed triangle meshes") {
+  // CGAL's Loop_mask_3 writes the vertex rule as (n (1 - C_n)/C_n S + R) / (n / C_n) with
+  // C_n = 5/8 - (3 + 2 cos(2 pi / n))^2 / 64 = n beta, i.e. (1 - n beta) S + beta R (and 10/16, 1/16 for n =
+  // 6), and the edge rule as (3 (a + b) + c + d) / 8: the same rules, rounded differently (well below 1e-12
+  // here).
+  for (const PolygonSoup& soup : closed_triangle_meshes()) {
+    CAPTURE(soup.num_faces());
+    SurfaceMesh sm = to_cgal(soup);
+    CGAL::Subdivision_method_3::Loop_subdivision(sm, CGAL::parameters::number_of_iterations(2));
+    const Mesh ours = loop(loop(build_mesh(soup)));
+    require_same(to_polygons(ours), from_cgal(sm));
+  }
+}
+
+TEST_CASE("oracle: sqrt3 agrees with CGAL on closed triangle meshes") {
+  // CGAL's Sqrt3_1step: centroid face points (Linear_mask_3::face_node), the vertex rule with
+  // a_n = (4 - 2 cos(2 pi / n)) / 9, add_center_vertex per triangle, then every old edge flipped by join_face
+  // and split_face: the same rules and the same flip, so the triangles (with their orientation) agree too.
+  // Its boundary rule (every second step) is not compared: we refuse open meshes.
+  for (const PolygonSoup& soup : closed_triangle_meshes()) {
+    CAPTURE(soup.num_faces());
+    SurfaceMesh sm = to_cgal(soup);
+    CGAL::Subdivision_method_3::Sqrt3_subdivision(sm, CGAL::parameters::number_of_iterations(2));
+    const Mesh ours = sqrt3(sqrt3(build_mesh(soup)));
     require_same(to_polygons(ours), from_cgal(sm));
   }
 }

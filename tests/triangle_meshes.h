@@ -1,0 +1,233 @@
+#pragma once
+// Triangle meshes for the tests of Loop and sqrt(3), and helpers shared by the tests of the classic schemes
+// (Doo-Sabin, Loop, sqrt(3), dual, dual-honeycomb-dual).
+
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <map>
+#include <numbers>
+#include <vector>
+
+#include "dlfl/build_mesh.h"
+#include "dlfl/mesh.h"
+#include "dlfl/polygon_soup.h"
+#include "dlfl/validate.h"
+#include "history/editor.h"
+#include "io/oplog.h"
+#include "scheme_meshes.h"
+#include "schemes/registry.h"
+#include "test_meshes.h"
+
+namespace dlfl::test {
+
+/// Every face of the soup cut into a fan of triangles from its first vertex (for convex faces, and for the
+/// quads of the test meshes, the result is a valid triangle mesh of the same topology).
+inline PolygonSoup triangulated(const PolygonSoup& soup) {
+  PolygonSoup t;
+  t.positions = soup.positions;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const auto face = soup.face(f);
+    for (std::size_t k = 1; k + 1 < face.size(); ++k) t.add_face({face[0], face[k], face[k + 1]});
+  }
+  return t;
+}
+
+/// The regular octahedron (vertices at the unit axis points): V = 6, E = 12, F = 8, every vertex 4-valent.
+inline PolygonSoup octahedron_soup() {
+  PolygonSoup s;
+  s.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
+  s.add_face({0, 2, 4});
+  s.add_face({2, 1, 4});
+  s.add_face({1, 3, 4});
+  s.add_face({3, 0, 4});
+  s.add_face({2, 0, 5});
+  s.add_face({1, 2, 5});
+  s.add_face({3, 1, 5});
+  s.add_face({0, 3, 5});
+  return s;
+}
+
+/// The regular icosahedron: V = 12, E = 30, F = 20, every vertex 5-valent.
+inline PolygonSoup icosahedron_soup() {
+  const double p = std::numbers::phi;
+  PolygonSoup s;
+  s.positions = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
+                 {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
+  const std::uint32_t faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                      {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                      {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                      {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  for (const auto& f : faces) s.add_face({f[0], f[1], f[2]});
+  return s;
+}
+
+/// Both soups in one, the second moved by `offset`: a mesh of two components.
+inline PolygonSoup disjoint_union(const PolygonSoup& a, const PolygonSoup& b, const glm::dvec3& offset) {
+  PolygonSoup u = a;
+  const auto base = static_cast<std::uint32_t>(a.positions.size());
+  for (const auto& p : b.positions) u.positions.push_back(p + offset);
+  for (std::size_t f = 0; f < b.num_faces(); ++f) {
+    std::vector<std::uint32_t> face;
+    for (std::uint32_t k : b.face(f)) face.push_back(base + k);
+    u.add_face(face);
+  }
+  return u;
+}
+
+/// Closed triangle meshes of genus 0 to 3 with valences from 3 to 8, one of two components.
+inline std::vector<PolygonSoup> closed_triangle_soups() {
+  return {tetrahedron_soup(),
+          octahedron_soup(),
+          icosahedron_soup(),
+          triangulated(cube_soup()),
+          triangulated(dodecahedron_soup()),
+          triangulated(to_polygons(mixed_polyhedron())),
+          triangulated(torus_soup(6, 5)),
+          triangulated(genus_soup(2)),
+          triangulated(genus_soup(3)),
+          disjoint_union(tetrahedron_soup(), triangulated(torus_soup(5, 4)), {10, 0, 0})};
+}
+
+/// Closed polygon meshes of genus 0 to 3 with faces of 3 to 7 sides, one of two components.
+inline std::vector<PolygonSoup> closed_polygon_soups() {
+  return {tetrahedron_soup(),
+          cube_soup(),
+          dodecahedron_soup(),
+          to_polygons(mixed_polyhedron()),
+          icosahedron_soup(),
+          torus_soup(7, 5),
+          genus_soup(2),
+          genus_soup(3),
+          triangulated(genus_soup(1)),
+          disjoint_union(cube_soup(), torus_soup(5, 4), {10, 0, 0})};
+}
+
+inline bool close(const glm::dvec3& a, const glm::dvec3& b, double tol = 1e-12) {
+  return std::abs(a.x - b.x) <= tol && std::abs(a.y - b.y) <= tol && std::abs(a.z - b.z) <= tol;
+}
+
+inline glm::dvec3 centroid(const Mesh& m, FaceId f) {
+  glm::dvec3 s(0.0);
+  for (CornerId c : m.corners(f)) s += m.position(m.vertex(c));
+  return s / double(m.size(f));
+}
+
+/// Signed volume enclosed by the non-hole faces (each cut into a fan): positive when faces turn
+/// counter-clockwise seen from outside, so it tells an outward orientation from an inward one.
+inline double signed_volume(const Mesh& m) {
+  double volume = 0;
+  for (FaceId f : m.faces()) {
+    if (m.is_hole(f)) continue;
+    const CornerId first = m.first_corner(f);
+    const glm::dvec3 p0 = m.position(m.vertex(first));
+    for (CornerId c = m.next(first); m.next(c) != first; c = m.next(c)) {
+      volume += glm::dot(p0, glm::cross(m.position(m.vertex(c)), m.position(m.vertex(m.next(c))))) / 6.0;
+    }
+  }
+  return volume;
+}
+
+/// The vertices of a face from its first corner.
+inline std::vector<VertexId> face_vertices(const Mesh& m, FaceId f) {
+  std::vector<VertexId> v;
+  for (CornerId c : m.corners(f)) v.push_back(m.vertex(c));
+  return v;
+}
+
+/// The same cycle started at its smallest element, so that equal cycles compare equal.
+inline std::vector<std::uint32_t> canonical_cycle(std::vector<std::uint32_t> cycle) {
+  std::rotate(cycle.begin(), std::min_element(cycle.begin(), cycle.end()), cycle.end());
+  return cycle;
+}
+
+/// Number of faces by size, and number of vertices by valence.
+inline std::map<std::uint32_t, std::size_t> face_size_histogram(const Mesh& m) {
+  std::map<std::uint32_t, std::size_t> h;
+  for (FaceId f : m.faces()) ++h[m.size(f)];
+  return h;
+}
+inline std::map<std::uint32_t, std::size_t> valence_histogram(const Mesh& m) {
+  std::map<std::uint32_t, std::size_t> h;
+  for (VertexId v : m.vertices()) ++h[m.valence(v)];
+  return h;
+}
+
+/// The output is valid and every component keeps its genus (the components keep their order, since the
+/// schemes number their output from their input).
+inline void check_valid_same_genus(const Mesh& in, const Mesh& out) {
+  const ValidationReport before = validate(in);
+  const ValidationReport after = validate(out);
+  REQUIRE(after.valid());
+  REQUIRE(after.components.size() == before.components.size());
+  for (std::size_t i = 0; i < before.components.size(); ++i) {
+    CHECK(after.components[i].genus == before.components[i].genus);
+  }
+}
+
+/// A fixed, non-degenerate affine map x -> A x + t.
+struct AffineMap {
+  glm::dmat3 a{1.2, 0.3, -0.1, 0.2, 0.9, 0.4, -0.3, 0.1, 1.1};
+  glm::dvec3 t{0.5, -2.0, 3.0};
+  glm::dvec3 operator()(const glm::dvec3& p) const { return a * p + t; }
+};
+
+/// Checks scheme(A(mesh)) = A(scheme(mesh)) vertex by vertex (handles are a function of connectivity only).
+template <class Scheme>
+void check_affine_invariance(const Mesh& in, Scheme scheme) {
+  const AffineMap map;
+  Mesh moved = in;
+  for (VertexId v : moved.vertices()) moved.set_position(v, map(moved.position(v)));
+  const Mesh x = scheme(moved);
+  const Mesh y = scheme(in);
+  REQUIRE(x.num_vertices() == y.num_vertices());
+  for (VertexId v : x.vertices()) CHECK(close(x.position(v), map(y.position(v)), 1e-12));
+}
+
+/// The number of faces flagged as holes.
+inline std::size_t count_holes(const Mesh& m) {
+  std::size_t n = 0;
+  for (FaceId f : m.faces()) n += m.is_hole(f);
+  return n;
+}
+
+/// The message of the exception a call throws (empty if it throws none of type E).
+template <class E, class F>
+std::string error_message(F&& f) {
+  try {
+    f();
+  } catch (const E& e) {
+    return e.what();
+  }
+  return {};
+}
+
+/// The scheme through the editor and the log, as `dlfl subdivide -s NAME` runs it: two steps equal
+/// `expected` (the scheme's function applied twice), undo gives the input back exactly, redo the result, the
+/// log replays to an equal mesh, and a step the scheme refuses (on `refused`) leaves the editor unchanged.
+inline void check_editor_and_log(const Mesh& in, const std::string& scheme, const SchemeParams& params,
+                                 const Mesh& expected, const Mesh& refused) {
+  Editor ed;
+  ed.set_mesh(in);
+  ed.subdivide(scheme, params, 2);
+  CHECK(ed.mesh() == expected);
+  CHECK(ed.undo());  // both steps are one entry
+  CHECK(ed.mesh() == in);
+  CHECK(ed.redo());
+  CHECK(ed.mesh() == expected);
+  CHECK(replay_log(ed.log()).mesh() == expected);
+  Editor bad;
+  bad.set_mesh(refused);
+  CHECK_THROWS_AS(bad.subdivide(scheme, params), Error);
+  CHECK(bad.mesh() == refused);
+  CHECK(bad.undo());  // only the set_mesh entry
+  CHECK_FALSE(bad.can_undo());
+  // No scheme here takes a parameter named "x".
+  CHECK_THROWS_WITH_AS(resolve_scheme_params(scheme, {{"x", 1.0}}),
+                       doctest::Contains((scheme + ": unknown parameter 'x'").c_str()), InvalidArgument);
+}
+
+}  // namespace dlfl::test
