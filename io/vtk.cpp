@@ -465,6 +465,8 @@ CellComplex parse_vtk(std::string_view data, const std::string& name) {
       read_cell_types(in, binary, raw);
       have_types = true;
     } else if (equals_nocase(keyword, "METADATA")) {
+      // Information keys that newer writers add after an array, up to an empty line: not needed here.
+      in.read_line("the METADATA line");
       while (!in.read_line("the end of METADATA").empty()) {
       }
     } else if (equals_nocase(keyword, "POINT_DATA") || equals_nocase(keyword, "CELL_DATA") ||

@@ -194,10 +194,11 @@ TEST_CASE("vtk: poly vertices and poly lines are split; attributes after the cel
   CHECK(c.positions[3] == glm::dvec3(3, 0, 0));
 }
 
-TEST_CASE("vtk: version 5 files with OFFSETS and CONNECTIVITY") {
+TEST_CASE("vtk: version 5 files with OFFSETS and CONNECTIVITY, and METADATA blocks") {
   const std::string text =
       "# vtk DataFile Version 5.1\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 float\n"
-      "0 0 0 1 0 0 1 1 0 0 1 0\nCELLS 3 6\nOFFSETS vtktypeint64\n0 4 6\nCONNECTIVITY vtktypeint64\n"
+      "0 0 0 1 0 0 1 1 0 0 1 0\nMETADATA\nINFORMATION 1\nNAME SOME_KEY LOCATION vtkDataArray\nDATA 1 2\n\n"
+      "CELLS 3 6\nOFFSETS vtktypeint64\n0 4 6\nCONNECTIVITY vtktypeint64\n"
       "0 1 2 3 0 2\nCELL_TYPES 2\n9\n3\n";
   const CellComplex c = parse_vtk(text, "v5.vtk");
   REQUIRE(c.num_cells() == 2);
@@ -312,4 +313,30 @@ TEST_CASE("vtk: a failed read or write leaves no output file") {
   CHECK_THROWS_AS(read_cell_complex(inputs / "missing.vtk"), IoError);
   CHECK_THROWS_AS(write_cell_complex(awkward_complex(), outputs / "x.stl"), IoError);
   CHECK(outputs.count() == 1);
+}
+
+TEST_CASE("vtk: binary version 5 files with float points and 64-bit offsets") {
+  std::string data = "# vtk DataFile Version 5.1\nt\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 float\n";
+  auto put = [&](auto value) {
+    unsigned char bytes[sizeof(value)];
+    std::memcpy(bytes, &value, sizeof(value));
+    if constexpr (std::endian::native == std::endian::little) std::reverse(bytes, bytes + sizeof(value));
+    data.append(reinterpret_cast<const char*>(bytes), sizeof(value));
+  };
+  for (float x : {0.5f, -1.25f, 3.0f, 0.1f, 2.0f, -8.0f}) put(x);
+  data += "\nCELLS 3 3\nOFFSETS vtktypeint64\n";
+  for (std::int64_t x : {0, 2, 3}) put(x);
+  data += "\nCONNECTIVITY vtktypeint64\n";
+  for (std::int64_t x : {1, 0, 1}) put(x);
+  data += "\nCELL_TYPES 2\n";
+  for (std::int32_t x : {3, 1}) put(x);
+  data += "\n";
+  const CellComplex c = parse_vtk(data, "b5.vtk");
+  REQUIRE(c.positions.size() == 2);
+  CHECK(c.positions[0] == glm::dvec3(0.5, -1.25, 3.0));
+  CHECK(c.positions[1] == glm::dvec3(double(0.1f), 2.0, -8.0));  // the float's value, exactly
+  REQUIRE(c.num_cells() == 2);
+  CHECK(c.cell(0)[0] == 1);
+  CHECK(c.cell(0)[1] == 0);
+  CHECK(c.cell(1)[0] == 1);
 }
