@@ -308,3 +308,47 @@ TEST_CASE("mlca surface: registered as -s mlca") {
   CHECK(max_distance(a, b) == 0.0);
   CHECK_THROWS_AS(resolve_scheme_params("mlca", {{"t", 0.5}}), InvalidArgument);
 }
+
+TEST_CASE("mlca surface: the reduced subdivision matrix (6) with a = 1/(16n) has eigenvalues 1, 1/4, 1/16") {
+  for (int n : {3, 5, 7}) {
+    const Mesh prism = build_mesh(prism_soup(n));
+    const Mesh quads = split_to_quads(prism);
+    const VertexId v(std::uint32_t(prism.num_vertices() + prism.num_edges() + 1));  // top centre, valence n
+    const auto nv = std::uint32_t(quads.num_vertices()), ne = std::uint32_t(quads.num_edges());
+    const CornerId c0 = quads.corner(v);
+    // Rotationally symmetric data: x = s[0] at v, s[1] at the n edge neighbours, s[2] at the n diagonal ones.
+    // The new v, the edge point of (v, e) and the face point of a quad at v depend on these alone.
+    double m[3][3];
+    for (int j = 0; j < 3; ++j) {
+      Mesh probe = quads;
+      for (VertexId x : probe.vertices())
+        probe.set_position(x, {0.0, probe.position(x).y, probe.position(x).z});
+      auto set_x = [&](VertexId x, double value) {
+        probe.set_position(x, {value, probe.position(x).y, probe.position(x).z});
+      };
+      set_x(v, j == 0 ? 1.0 : 0.0);
+      for (CornerId c : quads.corners(v)) {
+        set_x(quads.vertex(quads.next(c)), j == 1 ? 1.0 : 0.0);
+        set_x(quads.vertex(quads.next(quads.next(c))), j == 2 ? 1.0 : 0.0);
+      }
+      const Mesh out = mlca(probe);
+      m[0][j] = out.position(v).x;
+      m[1][j] = out.position(VertexId(nv + quads.edge(c0).index())).x;
+      m[2][j] = out.position(VertexId(nv + ne + quads.face(c0).index())).x;
+    }
+    const double a = 1.0 / (16.0 * n);
+    const double expected[3][3] = {
+        {1 - 7 * n * a, 6 * n * a, n * a}, {3.0 / 8, 1.0 / 2, 1.0 / 8}, {1.0 / 4, 1.0 / 2, 1.0 / 4}};
+    for (int i = 0; i < 3; ++i) {
+      for (int j = 0; j < 3; ++j) CHECK(m[i][j] == doctest::Approx(expected[i][j]).epsilon(1e-14));
+    }
+    // det(M - lambda I) = 0 for each eigenvalue of the measured matrix.
+    for (double lambda : {1.0, 0.25, 1.0 / 16}) {
+      const double a00 = m[0][0] - lambda, a11 = m[1][1] - lambda, a22 = m[2][2] - lambda;
+      const double det = a00 * (a11 * a22 - m[1][2] * m[2][1]) -
+                         m[0][1] * (m[1][0] * a22 - m[1][2] * m[2][0]) +
+                         m[0][2] * (m[1][0] * m[2][1] - a11 * m[2][0]);
+      CHECK(std::abs(det) < 1e-14);
+    }
+  }
+}
