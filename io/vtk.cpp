@@ -118,15 +118,22 @@ class VtkScanner {
   /// The line of the last token read.
   std::size_t token_line() const { return lines_known_ ? token_line_ : 0; }
 
-  /// The next token as a number of type T; `what` names it in errors.
+  /// The next token as a number of type T. `what` (and `index`, if not npos) name it in errors; the message
+  /// is only built on failure, as this runs once per number of the file.
   template <class T>
-  T number(const std::string& what) {
-    const std::string_view t = token();
-    if (t.empty()) fail("truncated file: missing " + what);
+  T number(const char* what, std::size_t index = std::string::npos) {
+    std::string_view t = token();
+    auto describe = [&] {
+      std::string text = what;
+      if (index != std::string::npos) text += ' ' + std::to_string(index);
+      return text;
+    };
+    if (t.empty()) fail("truncated file: missing " + describe());
+    if (t.size() > 1 && t[0] == '+') t.remove_prefix(1);  // from_chars rejects a leading '+'
     T value{};
     auto [ptr, ec] = std::from_chars(t.data(), t.data() + t.size(), value);
     if (ec != std::errc() || ptr != t.data() + t.size()) {
-      fail("bad " + what + " '" + std::string(t) + "'", token_line());
+      fail("bad " + describe() + " '" + std::string(t) + "'", token_line());
     }
     return value;
   }
@@ -167,8 +174,13 @@ class VtkScanner {
   bool lines_known_ = true;
 };
 
+// The file line of entry i for messages; binary sections keep no lines (empty), which reads as 0.
+std::size_t line_of(const std::vector<std::size_t>& lines, std::size_t i) {
+  return i < lines.size() ? lines[i] : 0;
+}
+
 // What the sections hold before they are turned into cells: the raw lists, and for messages the line of
-// each cell's list and of its type (0 in binary parts).
+// each cell's list and of its type (none for binary sections).
 struct RawCells {
   std::vector<std::uint64_t> offsets{0};
   std::vector<std::int64_t> connectivity;
@@ -181,7 +193,7 @@ struct RawCells {
 // A count read from a section header, bounded by what the file can hold (so a corrupt count cannot make us
 // allocate without limit) and by the 32-bit indices of CellComplex.
 std::size_t section_count(VtkScanner& in, const std::string& what, std::size_t bytes_per_item) {
-  const auto n = in.number<std::int64_t>(what);
+  const auto n = in.number<std::int64_t>(what.c_str());
   if (n < 0) in.fail(what + " is negative", in.token_line());
   if (static_cast<std::uint64_t>(n) > 0xFFFFFFFEull)
     in.fail(what + " exceeds the 32-bit limit", in.token_line());
@@ -208,7 +220,7 @@ void read_points(VtkScanner& in, bool binary, CellComplex& out) {
   };
   if (!binary) {
     for (std::size_t i = 0; i < 3 * n; ++i) {
-      const double value = in.number<double>("coordinate of point " + std::to_string(i / 3));
+      const double value = in.number<double>("coordinate of point", i / 3);
       store(i, value, in.token_line());
     }
     return;
@@ -231,7 +243,7 @@ void read_legacy_cells(VtkScanner& in, bool binary, RawCells& raw) {
     raw.cell_lines.reserve(n);
     std::size_t used = 0;
     for (std::size_t i = 0; i < n; ++i) {
-      const auto count = in.number<std::int64_t>("vertex count of cell " + std::to_string(i));
+      const auto count = in.number<std::int64_t>("vertex count of cell", i);
       raw.cell_lines.push_back(in.token_line());
       if (count < 0 || used + 1 + std::uint64_t(count) > size) {
         in.fail("cell " + std::to_string(i) + ": vertex count " + std::to_string(count) +
@@ -239,7 +251,7 @@ void read_legacy_cells(VtkScanner& in, bool binary, RawCells& raw) {
                 in.token_line());
       }
       for (std::int64_t k = 0; k < count; ++k) {
-        raw.connectivity.push_back(in.number<std::int64_t>("vertex index of cell " + std::to_string(i)));
+        raw.connectivity.push_back(in.number<std::int64_t>("vertex index of cell", i));
       }
       used += 1 + std::size_t(count);
       raw.offsets.push_back(raw.connectivity.size());
@@ -249,22 +261,25 @@ void read_legacy_cells(VtkScanner& in, bool binary, RawCells& raw) {
     return;
   }
   in.end_keyword_line();
-  std::vector<std::int32_t> values(size);
-  in.binary_block<std::int32_t>(size, "CELLS", [&](std::size_t i, std::int32_t v) { values[i] = v; });
-  std::size_t at = 0;
-  for (std::size_t i = 0; i < n; ++i) {
-    if (at >= size || values[at] < 0 || at + 1 + std::size_t(values[at]) > size) {
-      in.fail("cell " + std::to_string(i) + ": its vertex list does not fit the CELLS size " +
-              std::to_string(size));
+  // One pass over the interleaved counts and indices, straight from the file's bytes.
+  std::size_t left = 0;  // indices still to come in the current cell
+  in.binary_block<std::int32_t>(size, "CELLS", [&](std::size_t at, std::int32_t v) {
+    if (left > 0) {
+      raw.connectivity.push_back(v);
+      if (--left == 0) raw.offsets.push_back(raw.connectivity.size());
+      return;
     }
-    const std::size_t count = std::size_t(values[at]);
-    raw.connectivity.insert(raw.connectivity.end(), values.begin() + std::ptrdiff_t(at + 1),
-                            values.begin() + std::ptrdiff_t(at + 1 + count));
-    at += 1 + count;
-    raw.offsets.push_back(raw.connectivity.size());
+    const std::size_t i = raw.num_cells();
+    if (i == n || v < 0 || at + 1 + std::size_t(v) > size) {
+      in.fail("cell " + std::to_string(i) + ": its vertex list does not fit the CELLS count " +
+              std::to_string(n) + " and size " + std::to_string(size));
+    }
+    left = std::size_t(v);
+    if (left == 0) raw.offsets.push_back(raw.connectivity.size());
+  });
+  if (raw.num_cells() != n) {
+    in.fail("CELLS count " + std::to_string(n) + " but the lists hold " + std::to_string(raw.num_cells()));
   }
-  if (at != size) in.fail("CELLS size " + std::to_string(size) + " but the lists hold " + std::to_string(at));
-  raw.cell_lines.assign(n, 0);
 }
 
 // Version 5: CELLS n+1 m, then OFFSETS type (n+1 values) and CONNECTIVITY type (m values).
@@ -282,7 +297,7 @@ std::vector<std::int64_t> read_array(VtkScanner& in, bool binary, const char* ke
   std::vector<std::int64_t> values(count);
   if (!binary) {
     for (std::size_t i = 0; i < count; ++i) {
-      values[i] = in.number<std::int64_t>(std::string(keyword) + " value " + std::to_string(i));
+      values[i] = in.number<std::int64_t>(keyword, i);
       if (lines) lines->push_back(in.token_line());
     }
     return values;
@@ -293,7 +308,6 @@ std::vector<std::int64_t> read_array(VtkScanner& in, bool binary, const char* ke
   } else {
     in.binary_block<std::int32_t>(count, keyword, [&](std::size_t i, std::int32_t v) { values[i] = v; });
   }
-  if (lines) lines->assign(count, 0);
   return values;
 }
 
@@ -309,12 +323,12 @@ void read_offset_cells(VtkScanner& in, bool binary, RawCells& raw) {
     if (offsets[i] < (i ? offsets[i - 1] : 0) || std::uint64_t(offsets[i]) > size) {
       in.fail("OFFSETS value " + std::to_string(i) + " (" + std::to_string(offsets[i]) +
                   ") is not between the previous offset and the CONNECTIVITY size",
-              offset_lines[i]);
+              line_of(offset_lines, i));
     }
     raw.offsets.push_back(std::uint64_t(offsets[i]));
   }
   if (raw.offsets.back() != size) in.fail("the last OFFSETS value is not the CONNECTIVITY size");
-  raw.cell_lines.assign(offset_lines.begin() + 1, offset_lines.end());
+  if (!offset_lines.empty()) raw.cell_lines.assign(offset_lines.begin() + 1, offset_lines.end());
 }
 
 void read_cell_types(VtkScanner& in, bool binary, RawCells& raw) {
@@ -328,26 +342,27 @@ void read_cell_types(VtkScanner& in, bool binary, RawCells& raw) {
   if (!binary) {
     raw.type_lines.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {
-      raw.types[i] = in.number<std::int64_t>("type of cell " + std::to_string(i));
+      raw.types[i] = in.number<std::int64_t>("type of cell", i);
       raw.type_lines.push_back(in.token_line());
     }
     return;
   }
   in.end_keyword_line();
   in.binary_block<std::int32_t>(n, "CELL_TYPES", [&](std::size_t i, std::int32_t v) { raw.types[i] = v; });
-  raw.type_lines.assign(n, 0);
 }
 
 // Turns the raw lists into tensor-ordered cells, checking each against its type and the points.
 void emit_cells(const VtkScanner& in, const RawCells& raw, CellComplex& out) {
   const std::size_t nv = out.positions.size();
+  out.indices.reserve(raw.connectivity.size());  // exact unless poly cells are split
+  out.offsets.reserve(raw.num_cells() + 1);
   std::uint32_t cell[8];
   auto add = [&](std::size_t i, std::size_t size) {
     for (std::size_t j = 0; j < size; ++j) {
       for (std::size_t k = j + 1; k < size; ++k) {
         if (cell[j] == cell[k]) {
           in.fail("cell " + std::to_string(i) + " uses point " + std::to_string(cell[j]) + " twice",
-                  raw.cell_lines[i]);
+                  line_of(raw.cell_lines, i));
         }
       }
     }
@@ -360,7 +375,7 @@ void emit_cells(const VtkScanner& in, const RawCells& raw, CellComplex& out) {
       if (list[k] < 0 || std::uint64_t(list[k]) >= nv) {
         in.fail("cell " + std::to_string(i) + " uses point " + std::to_string(list[k]) + " but there are " +
                     std::to_string(nv) + " points",
-                raw.cell_lines[i]);
+                line_of(raw.cell_lines, i));
       }
     }
     const std::int64_t type = raw.types[i];
@@ -390,13 +405,13 @@ void emit_cells(const VtkScanner& in, const RawCells& raw, CellComplex& out) {
       default:
         in.fail("cell " + std::to_string(i) + " has the unsupported type " + std::to_string(type) + " (" +
                     cell_type_name(type) + "); supported: 1, 2, 3, 4, 8, 9, 11, 12",
-                raw.type_lines[i]);
+                line_of(raw.type_lines, i));
     }
     if (expected ? count != expected : count < at_least) {
       in.fail("cell " + std::to_string(i) + " of type " + cell_type_name(type) + " has " +
                   std::to_string(count) + " points; it needs " + (expected ? "" : "at least ") +
                   std::to_string(expected ? expected : at_least),
-              raw.cell_lines[i]);
+              line_of(raw.cell_lines, i));
     }
     auto at = [&](std::size_t k) { return static_cast<std::uint32_t>(list[k]); };
     if (type == 2) {
