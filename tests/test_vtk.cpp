@@ -282,6 +282,11 @@ TEST_CASE("vtk: bad binary data is an IoError naming the point") {
   // Cut inside the cell list.
   const std::string cut = data.substr(0, data.find("CELLS 1 3\n") + 10 + 5);
   CHECK_THROWS_WITH_AS(parse_vtk(cut, "c.vtk"), doctest::Contains("truncated file"), IoError);
+  // A cell list whose count runs past the CELLS size.
+  std::string long_count = data;
+  long_count[long_count.find("CELLS 1 3\n") + 10 + 3] = 5;
+  CHECK_THROWS_WITH_AS(parse_vtk(long_count, "l.vtk"), doctest::Contains("does not fit the CELLS count"),
+                       IoError);
   // Cut inside the points.
   CHECK_THROWS_WITH_AS(parse_vtk(data.substr(0, at), "p.vtk"), doctest::Contains("truncated file"), IoError);
 }
