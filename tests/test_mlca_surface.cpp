@@ -352,3 +352,36 @@ TEST_CASE("mlca surface: the reduced subdivision matrix (6) with a = 1/(16n) has
     }
   }
 }
+
+TEST_CASE("mlca surface: open triangle meshes and degenerate inputs give valid meshes") {
+  // A triangulated 3 x 2 grid: split to quads (its hole too), then one step.
+  PolygonSoup tri;
+  const PolygonSoup grid = test::grid_soup(3, 2);
+  tri.positions = grid.positions;
+  for (std::size_t f = 0; f < grid.num_faces(); ++f) {
+    const auto q = grid.face(f);
+    tri.add_face({q[0], q[1], q[2]});
+    tri.add_face({q[0], q[2], q[3]});
+  }
+  const Mesh open = build_mesh(tri);
+  const Mesh out = mlca(open);
+  REQUIRE(validate(out).valid());
+  std::size_t real = 0;
+  for (FaceId f : out.faces()) real += out.is_hole(f) ? 0 : 1;
+  CHECK(real == 12 * 12);  // 12 triangles -> 36 quads -> 144
+  // The boundary stays in the plane z = 0 and inside the grid's rectangle.
+  for (VertexId v : out.vertices()) {
+    const glm::dvec3 p = out.position(v);
+    CHECK(p.z == 0.0);
+    CHECK((p.x >= 0.0 && p.x <= 3.0 && p.y >= 0.0 && p.y <= 2.0));
+  }
+  // Two point spheres joined by an edge: one face of two corners (a 2-gon), split into two quads.
+  Mesh segment;
+  const VertexId a = segment.create_vertex({0, 0, 0}), b = segment.create_vertex({1, 0, 0});
+  segment.insert_edge(segment.corner(a), segment.corner(b));
+  const Mesh segment_out = mlca(segment);
+  REQUIRE(validate(segment_out).valid());
+  CHECK(segment_out.num_faces() == 4 * 2);
+  // The empty mesh.
+  CHECK(mlca(Mesh()).num_vertices() == 0);
+}
