@@ -191,7 +191,7 @@ struct RawCells {
 };
 
 // A count read from a section header, bounded by what the file can hold (so a corrupt count cannot make us
-// allocate without limit) and by the 32-bit indices of CellComplex.
+// allocate without limit; the bound is loose by a factor of two) and by the 32-bit indices of CellComplex.
 std::size_t section_count(VtkScanner& in, const std::string& what, std::size_t bytes_per_item) {
   const auto n = in.number<std::int64_t>(what.c_str());
   if (n < 0) in.fail(what + " is negative", in.token_line());
@@ -205,7 +205,7 @@ std::size_t section_count(VtkScanner& in, const std::string& what, std::size_t b
 }
 
 void read_points(VtkScanner& in, bool binary, CellComplex& out) {
-  const std::size_t n = section_count(in, "the POINTS count", binary ? 12 : 6);
+  const std::size_t n = section_count(in, "POINTS count", binary ? 12 : 6);
   const std::string_view type = in.token();
   const bool is_double = equals_nocase(type, "double");
   if (!is_double && !equals_nocase(type, "float")) {
@@ -235,8 +235,8 @@ void read_points(VtkScanner& in, bool binary, CellComplex& out) {
 
 // Versions before 5: CELLS n size, then per cell its vertex count and its indices (size values in all).
 void read_legacy_cells(VtkScanner& in, bool binary, RawCells& raw) {
-  const std::size_t n = section_count(in, "the CELLS count", binary ? 4 : 2);
-  const std::size_t size = section_count(in, "the CELLS size", binary ? 4 : 2);
+  const std::size_t n = section_count(in, "CELLS count", binary ? 4 : 2);
+  const std::size_t size = section_count(in, "CELLS size", binary ? 4 : 2);
   raw.connectivity.reserve(size);
   raw.offsets.reserve(n + 1);
   if (!binary) {
@@ -312,8 +312,8 @@ std::vector<std::int64_t> read_array(VtkScanner& in, bool binary, const char* ke
 }
 
 void read_offset_cells(VtkScanner& in, bool binary, RawCells& raw) {
-  const std::size_t n_offsets = section_count(in, "the CELLS offset count", binary ? 4 : 2);
-  const std::size_t size = section_count(in, "the CELLS connectivity size", binary ? 4 : 2);
+  const std::size_t n_offsets = section_count(in, "CELLS offset count", binary ? 4 : 2);
+  const std::size_t size = section_count(in, "CELLS connectivity size", binary ? 4 : 2);
   std::vector<std::size_t> offset_lines;
   const auto offsets = read_array(in, binary, "OFFSETS", n_offsets, &offset_lines);
   raw.connectivity = read_array(in, binary, "CONNECTIVITY", size, nullptr);
@@ -332,7 +332,7 @@ void read_offset_cells(VtkScanner& in, bool binary, RawCells& raw) {
 }
 
 void read_cell_types(VtkScanner& in, bool binary, RawCells& raw) {
-  const std::size_t n = section_count(in, "the CELL_TYPES count", binary ? 4 : 2);
+  const std::size_t n = section_count(in, "CELL_TYPES count", binary ? 4 : 2);
   if (n != raw.num_cells()) {
     in.fail(
         "CELL_TYPES has " + std::to_string(n) + " entries for " + std::to_string(raw.num_cells()) + " cells",

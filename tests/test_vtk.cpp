@@ -235,6 +235,9 @@ TEST_CASE("vtk: every bad input is an IoError naming the file and line") {
       {"truncated points", join(truncated), 0, "truncated file"},
       {"truncated cells", join(no_types), 0, "CELLS without CELL_TYPES"},
       {"empty file", "", 0, "truncated file"},
+      {"huge count", with_line(5, "POINTS 99999999 double"), 5,
+       "POINTS count is 99999999 but the file is too short"},
+      {"negative count", with_line(10, "CELLS -2 8"), 10, "CELLS count is negative"},
   };
   for (const Case& c : cases) {
     INFO(c.what);
