@@ -65,36 +65,42 @@ Mesh mlca_quad_step(const Mesh& m) {
   const auto nv = static_cast<std::uint32_t>(m.num_vertices());
   const auto ne = static_cast<std::uint32_t>(m.num_edges());
   const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());
   const std::uint32_t edge_base = nv, face_base = nv + ne;
-  MeshAssembler out(std::size_t(nv) + ne + nf, nc, 4);
+  MeshAssembler out(std::size_t(nv) + ne + nf, m.num_corners(), 4);
 
-  detail::LargeVector<glm::dvec3> face_point(nf);
-  bool any_hole = false;
-  for (std::uint32_t f = 0; f < nf; ++f) {
-    glm::dvec3 sum(0.0);
-    for (CornerId c : m.corners(FaceId(f))) sum += m.position(m.vertex(c));
-    face_point[f] = sum / double(m.size(FaceId(f)));
-    out.set_position(face_base + f, face_point[f]);
-    any_hole |= m.is_hole(FaceId(f));
-  }
-  // Sums of fine quad centroids: vertex points at 0..nv-1, edge points at nv..nv+ne-1. Hole quads are not
-  // cells of the surface and add nothing.
+  // One pass over the faces: the face point, and the sums of fine quad centroids for vertex points (at
+  // 0..nv-1) and edge points (at nv..nv+ne-1). The fine quads of corners c_i and c_{i+1} are the two of this
+  // face at the edge from c_i to c_{i+1}. Hole quads are not cells of the surface and add nothing.
   detail::LargeVector<glm::dvec3> sums(std::size_t(nv) + ne, glm::dvec3(0.0));
   detail::LargeVector<std::uint32_t> quads_at(nv, 0);
-  for (std::uint32_t k = 0; k < nc; ++k) {
-    const CornerId c(k);
-    const FaceId f = m.face(c);
-    if (any_hole && m.is_hole(f)) continue;
-    const CornerId p = m.prev(c);
-    const std::uint32_t v = m.vertex(c).index();
-    const glm::dvec3 q = 0.5 * m.position(VertexId(v)) +
-                         0.125 * (m.position(m.vertex(m.next(c))) + m.position(m.vertex(p))) +
-                         0.25 * face_point[f.index()];
-    sums[v] += q;
-    ++quads_at[v];
-    sums[edge_base + m.edge(c).index()] += q;
-    sums[edge_base + m.edge(p).index()] += q;
+  bool any_hole = false;
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const FaceId face(f);
+    if (m.is_hole(face)) {
+      any_hole = true;
+      glm::dvec3 sum(0.0);
+      for (CornerId c : m.corners(face)) sum += m.position(m.vertex(c));
+      out.set_position(face_base + f, sum / double(m.size(face)));
+      continue;
+    }
+    CornerId c[4];
+    c[0] = m.first_corner(face);
+    for (int i = 1; i < 4; ++i) c[i] = m.next(c[i - 1]);
+    std::uint32_t v[4];
+    glm::dvec3 p[4];
+    for (int i = 0; i < 4; ++i) {
+      v[i] = m.vertex(c[i]).index();
+      p[i] = m.position(VertexId(v[i]));
+    }
+    const glm::dvec3 centre = 0.25 * (p[0] + p[1] + p[2] + p[3]);
+    out.set_position(face_base + f, centre);
+    glm::dvec3 q[4];
+    for (int i = 0; i < 4; ++i) q[i] = 0.5 * p[i] + 0.125 * (p[(i + 1) & 3] + p[(i + 3) & 3]) + 0.25 * centre;
+    for (int i = 0; i < 4; ++i) {
+      sums[v[i]] += q[i];
+      ++quads_at[v[i]];
+      sums[edge_base + m.edge(c[i]).index()] += q[i] + q[(i + 1) & 3];
+    }
   }
   // Boundary edges are crease segments: a vertex on one averages over the fine segments (p_v + m) / 2 around
   // it, which is 3/4 p_v + 1/(4k) of its k boundary neighbours; the edge point itself stays at the midpoint.
