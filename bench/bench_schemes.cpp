@@ -21,6 +21,7 @@
 #include "schemes/dual_honeycomb_dual.h"
 #include "schemes/honeycomb.h"
 #include "schemes/loop.h"
+#include "schemes/mlca.h"
 #include "schemes/sqrt3.h"
 #include "schemes/zhang_wang_honeycomb.h"
 
@@ -162,6 +163,8 @@ int main(int argc, char** argv) {
   const Mesh quads500 = torus(500, false);  // 4 F = 1M for Catmull-Clark; V + E + F = 1M for Doo-Sabin
   measure(
       "catmull-clark", quads500, runs, [](const Mesh& m) { return catmull_clark(m); }, 0.11);
+  measure(
+      "mlca (quads)", quads500, runs, [](const Mesh& m) { return mlca(m); }, 0);
   measure(
       "doo-sabin", quads500, runs, [](const Mesh& m) { return doo_sabin(m); }, 0.24);
   measure(

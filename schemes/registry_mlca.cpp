@@ -1,9 +1,15 @@
 // The registry entries of MLCA on polygon meshes.
 
+#include "schemes/mlca.h"
 #include "schemes/registry_entry.h"
 
 namespace dlfl::detail {
 
-std::vector<SchemeEntry> mlca_scheme_entries() { return {}; }
+std::vector<SchemeEntry> mlca_scheme_entries() {
+  return {{"mlca",
+           {},
+           [](SchemeParams p) { return p; },
+           [](const Mesh& m, const SchemeParams&) { return mlca(m); }}};
+}
 
 }  // namespace dlfl::detail
