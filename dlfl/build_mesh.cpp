@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "dlfl/edge_map.h"
+#include "dlfl/statistics.h"
 
 namespace dlfl {
 
@@ -189,16 +190,24 @@ PolygonSoup MeshBuilder::polygons(const Mesh& m) {
   PolygonSoup soup;
   std::vector<std::uint32_t> index(m.vertex_capacity(), none);
   soup.positions.reserve(m.num_vertices());
+  bool any_hole = false;
+  for (FaceId f : m.faces()) any_hole = any_hole || m.is_hole(f);
   for (VertexId v : m.vertices()) {
+    // The inner vertices of a hole covered by several hole faces are not part of the surface.
+    if (any_hole && !is_surface_vertex(m, v)) continue;
     index[v.index()] = static_cast<std::uint32_t>(soup.positions.size());
     soup.positions.push_back(m.position(v));
   }
   // Two edges between one pair of vertices would turn into one directed edge used twice. Key: (lower,
   // higher).
   std::vector<std::uint32_t> lower_degree(m.vertex_capacity(), 0);
-  for (EdgeId e : m.edges()) ++lower_degree[std::min(m.from(e).index(), m.to(e).index())];
+  auto written = [&](EdgeId e) { return !m.is_hole(m.face(e, 0)) || !m.is_hole(m.face(e, 1)); };
+  for (EdgeId e : m.edges()) {
+    if (written(e)) ++lower_degree[std::min(m.from(e).index(), m.to(e).index())];
+  }
   detail::EdgeMap pairs(lower_degree);
   for (EdgeId e : m.edges()) {
+    if (!written(e)) continue;
     std::uint32_t a = m.from(e).index(), b = m.to(e).index();
     if (a > b) std::swap(a, b);
     if (pairs.insert(a, b, e.index()) != e.index()) {

@@ -37,10 +37,11 @@ class PolygonError : public TopologyError {
 /// faces with opposite orientation), and a non-manifold vertex (its faces form more than one fan).
 Mesh build_mesh(const PolygonSoup& soup);
 
-/// The polygons of a mesh for writing: live vertices in handle order (renumbered densely), and every live
-/// face that is neither a hole nor a point sphere. Throws TopologyError if a face has 2 corners or two edges
-/// join the same two vertices: an indexed polygon list cannot represent those (save in the native JSON format
-/// instead).
+/// The polygons of a mesh for writing: the open surface's vertices (see `statistics`: every live vertex but
+/// the inner vertices of a hole covered by several hole faces) in handle order, renumbered densely, and every
+/// live face that is neither a hole nor a point sphere. Throws TopologyError if a face has 2 corners or two
+/// edges join the same two vertices: an indexed polygon list cannot represent those (save in the native JSON
+/// format instead).
 PolygonSoup to_polygons(const Mesh& mesh);
 
 }  // namespace dlfl

@@ -14,19 +14,17 @@ namespace dlfl::tool {
 nlohmann::ordered_json describe(const Mesh& mesh) {
   const MeshStatistics stats = statistics(mesh);
   const ValidationReport report = validate(mesh);
-  std::size_t hole_corners = 0;
-  for (FaceId f : mesh.faces()) hole_corners += mesh.is_hole(f) ? mesh.size(f) : 0;
-  const std::size_t faces = mesh.num_faces() - stats.holes;
+  // Counts of the open surface, as files hold it (holes left out; see MeshStatistics).
   nlohmann::ordered_json j;
-  j["vertices"] = mesh.num_vertices();
-  j["edges"] = mesh.num_edges();
-  j["faces"] = faces;
-  j["corners"] = mesh.num_corners() - hole_corners;
+  j["vertices"] = stats.vertices;
+  j["edges"] = stats.edges;
+  j["faces"] = stats.faces;
+  j["corners"] = stats.corners;
   j["holes"] = stats.holes;
   j["point_spheres"] = stats.point_spheres;
   j["components"] = report.components.size();
   // Of the surface as the user sees it, holes open: V - E + F with F the polygons.
-  j["euler_characteristic"] = long(mesh.num_vertices()) - long(mesh.num_edges()) + long(faces);
+  j["euler_characteristic"] = long(stats.vertices) - long(stats.edges) + long(stats.faces);
   auto genus = nlohmann::ordered_json::array();
   for (const auto& c : report.components) genus.push_back(c.genus);
   j["genus"] = genus;
