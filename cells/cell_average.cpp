@@ -1,6 +1,6 @@
 #include "cells/cell_average.h"
 
-#include <utility>
+#include "dlfl/large_allocator.h"
 
 namespace dlfl {
 
@@ -9,8 +9,8 @@ namespace {
 constexpr std::int8_t in_no_cell = 4;  // above every dimension, so any cell lowers it
 
 // dim[v] (in_no_cell for a vertex in no cell) and val[v], the number of cells of dimension dim[v] holding v.
-void dimensions_and_valences(const CellComplex& complex, std::vector<std::int8_t>& dim,
-                             std::vector<std::uint32_t>& val) {
+template <class Dimensions, class Valences>
+void dimensions_and_valences(const CellComplex& complex, Dimensions& dim, Valences& val) {
   dim.assign(complex.positions.size(), in_no_cell);
   val.assign(complex.positions.size(), 0);
   for (std::size_t i = 0; i < complex.num_cells(); ++i) {
@@ -45,11 +45,11 @@ void cell_average(CellComplex& complex) {
 }
 
 void detail::cell_average_unchecked(CellComplex& complex) {
-  std::vector<std::int8_t> dim;
-  std::vector<std::uint32_t> val;
+  detail::LargeVector<std::int8_t> dim;  // huge pages, and blocks reused from the previous step
+  detail::LargeVector<std::uint32_t> val;
   dimensions_and_valences(complex, dim, val);
   // Formula (1): each cell adds its centroid / val[v] to those of its vertices whose dim[v] is its dimension.
-  std::vector<glm::dvec3> moved(complex.positions.size(), glm::dvec3(0.0));
+  detail::LargeVector<glm::dvec3> moved(complex.positions.size(), glm::dvec3(0.0));
   for (std::size_t i = 0; i < complex.num_cells(); ++i) {
     const auto cell = complex.cell(i);
     const auto d = static_cast<std::int8_t>(complex.dimension(i));
@@ -60,10 +60,10 @@ void detail::cell_average_unchecked(CellComplex& complex) {
       if (dim[v] == d) moved[v] += centroid / double(val[v]);
     }
   }
+  // Written back in place: the positions' memory is mapped already.
   for (std::size_t v = 0; v < moved.size(); ++v) {
-    if (dim[v] == in_no_cell) moved[v] = complex.positions[v];
+    if (dim[v] != in_no_cell) complex.positions[v] = moved[v];
   }
-  complex.positions = std::move(moved);
 }
 
 }  // namespace dlfl

@@ -7,8 +7,10 @@
 #include <span>
 #include <string>
 
+#include "cells/huge_pages.h"
 #include "cells/vertex_set_map.h"
 #include "dlfl/errors.h"
+#include "dlfl/large_allocator.h"
 
 namespace dlfl {
 
@@ -112,7 +114,7 @@ CellComplex detail::multilinear_subdivide_unchecked(const CellComplex& in) {
 
   // Pass 1: the output size, and for each level how many sub-face occurrences start with each vertex (this
   // sizes the hash of that level).
-  std::array<std::vector<std::uint32_t>, 3> starts_with;
+  std::array<LargeVector<std::uint32_t>, 3> starts_with;
   int max_dimension = 0;
   for (std::size_t i = 0; i < nc; ++i) max_dimension = std::max(max_dimension, in.dimension(i));
   for (int level = 1; level <= max_dimension; ++level) starts_with[level - 1].assign(nv, 0);
@@ -141,9 +143,11 @@ CellComplex detail::multilinear_subdivide_unchecked(const CellComplex& in) {
   detail::VertexSetMap<8> cubes(starts_with[2]);
 
   CellComplex out;
-  out.positions.reserve(nv + occurrences);  // an upper bound: shared sub-faces are counted once per cell
+  reserve_huge(out.positions, nv + occurrences);  // an upper bound: shared sub-faces count once per cell
   out.positions.assign(in.positions.begin(), in.positions.end());
+  reserve_huge(out.offsets, out_cells + 1);
   out.offsets.resize(out_cells + 1);
+  reserve_huge(out.indices, out_indices);
   out.indices.resize(out_indices);
 
   // Pass 2: the vertex of every grid point of every cell (new ones at the first meeting), then the sub-cells.

@@ -11,6 +11,8 @@
 #include <span>
 #include <vector>
 
+#include "dlfl/large_allocator.h"
+
 namespace dlfl::detail {
 
 template <std::size_t K>
@@ -70,8 +72,8 @@ class VertexSetMap {
     return h >> 40;
   }
 
-  std::vector<std::size_t> start_;
-  std::vector<Slot> slots_;
+  LargeVector<std::size_t> start_;  // huge pages, and blocks reused from the previous step
+  LargeVector<Slot> slots_;
 };
 
 }  // namespace dlfl::detail
