@@ -61,6 +61,26 @@ CellComplex umbrella(std::uint32_t n) {
   return c;
 }
 
+// n hexahedra around each of two stacked edges: the umbrella extruded over the layers z = -1, 0, 1. The
+// centre of the middle layer (vertex 2n + 1) lies on an extraordinary edge of valence n.
+CellComplex extruded_umbrella(std::uint32_t n) {
+  const CellComplex flat = umbrella(n);
+  const auto layer = std::uint32_t(flat.positions.size());
+  CellComplex c;
+  for (int z = -1; z <= 1; ++z) {
+    for (const auto& q : flat.positions) c.positions.push_back(q + glm::dvec3(0.05 * z * z, 0.1 * z, z));
+  }
+  for (std::uint32_t z = 0; z < 2; ++z) {
+    for (std::size_t f = 0; f < flat.num_cells(); ++f) {
+      std::vector<std::uint32_t> hex;
+      for (std::uint32_t v : flat.cell(f)) hex.push_back(z * layer + v);
+      for (std::uint32_t v : flat.cell(f)) hex.push_back((z + 1) * layer + v);
+      c.add_cell(hex);
+    }
+  }
+  return c;
+}
+
 // Three quads hanging from the spine edge (0, 1): a non-manifold edge.
 CellComplex book() {
   CellComplex c;
@@ -161,6 +181,9 @@ TEST_CASE("mlca cells: the numbering of one split quad, by hand") {
   CHECK(std::vector<std::uint32_t>(with_creases.cell(5).begin(), with_creases.cell(5).end()) ==
         std::vector<std::uint32_t>{7, 1});
   CHECK(with_creases.cell(6)[0] == 2);
+  // A second quad on the same four vertices (a pillow) shares the centre too.
+  c.add_cell({0, 2, 1, 3});
+  CHECK(multilinear_subdivide(c).positions.size() == 9);
 }
 
 TEST_CASE("mlca cells: on a curve the vertex rule is (1/8, 3/4, 1/8) and the edge rule (1/2, 1/2)") {
@@ -244,6 +267,10 @@ TEST_CASE(
   const CellComplex more = mlca_subdivide(c, 4);
   CHECK(more.positions[0] == p[0]);
   CHECK(more.positions[5] == p[5]);
+  // A vertex in no cell has dim -1 and keeps its position.
+  c.positions.push_back({7, 8, 9});
+  CHECK(crease_dimensions(c).back() == -1);
+  CHECK(mlca_subdivide(c, 2).positions[6] == glm::dvec3(7, 8, 9));
 }
 
 TEST_CASE("mlca cells: the composite weights are formula (2), the central weight (3/4)^d, the sum 1 (4)") {
@@ -267,23 +294,8 @@ TEST_CASE("mlca cells: the composite weights are formula (2), the central weight
   cases.push_back(
       {"hexahedra, boundary vertex", hex_grid(2, 2, 2, jittered_lattice(5)), lattice_index(2, 2, 1, 0, 1)});
   for (std::uint32_t n : {3u, 5u}) {
-    // n hexahedra around each of two stacked edges: the 2D umbrella extruded over z = -1, 0, 1; the middle
-    // centre vertex lies on an extraordinary edge of valence n.
-    const CellComplex flat = umbrella(n);
-    const auto layer = std::uint32_t(flat.positions.size());
-    CellComplex c;
-    for (int z = -1; z <= 1; ++z) {
-      for (const auto& q : flat.positions) c.positions.push_back(q + glm::dvec3(0.05 * z * z, 0.1 * z, z));
-    }
-    for (std::uint32_t z = 0; z < 2; ++z) {
-      for (std::size_t f = 0; f < flat.num_cells(); ++f) {
-        std::vector<std::uint32_t> hex;
-        for (std::uint32_t v : flat.cell(f)) hex.push_back(z * layer + v);
-        for (std::uint32_t v : flat.cell(f)) hex.push_back((z + 1) * layer + v);
-        c.add_cell(hex);
-      }
-    }
-    cases.push_back({"extraordinary edge", c, layer});
+    cases.push_back(
+        {"extraordinary edge", extruded_umbrella(n), std::uint32_t(umbrella(n).positions.size())});
   }
 
   for (const Case& k : cases) {
@@ -302,6 +314,26 @@ TEST_CASE("mlca cells: the composite weights are formula (2), the central weight
     int d = 0;
     for (std::size_t i = 0; i < k.complex.num_cells(); ++i) d = std::max(d, k.complex.dimension(i));
     CHECK(row[k.vertex] == doctest::Approx(std::pow(0.75, d)).epsilon(1e-14));
+  }
+}
+
+TEST_CASE("mlca cells: along an extraordinary edge the rule is the surface rule times the curve rule (4.2)") {
+  for (std::uint32_t n : {3u, 5u, 6u}) {
+    CAPTURE(n);
+    const CellComplex c = extruded_umbrella(n);
+    const auto layer = std::uint32_t(2 * n + 1);
+    std::vector<std::uint32_t> all(c.positions.size());
+    for (std::uint32_t v = 0; v < all.size(); ++v) all[v] = v;
+    const auto row = subdivision_matrix(c, {layer}, all)[0];
+    // The bivariate rule at a valence-n vertex from formula (2) with d = 2, times (1/8, 3/4, 1/8) across
+    // layers.
+    const auto surface = formula2_weights(umbrella(n), 0);
+    const double curve[3] = {0.125, 0.75, 0.125};
+    for (std::uint32_t z = 0; z < 3; ++z) {
+      for (std::uint32_t v = 0; v < layer; ++v) {
+        CHECK(row[z * layer + v] == doctest::Approx(curve[z] * surface[v]).epsilon(1e-14));
+      }
+    }
   }
 }
 
@@ -401,6 +433,23 @@ TEST_CASE("mlca cells: on a closed quad mesh with all vertices 4-valent MLCA is 
   std::sort(faces.begin(), faces.end());
   std::sort(cells.begin(), cells.end());
   CHECK(faces == cells);
+}
+
+TEST_CASE(
+    "mlca cells: on the cube MLCA has Catmull-Clark's edge and face rules but a = 1/(16n) at vertices") {
+  PolygonSoup soup = test::cube_soup();
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> u(-0.2, 0.2);
+  for (auto& p : soup.positions) p += glm::dvec3(u(rng), u(rng), u(rng));
+  const CellComplex ours = mlca_subdivide(quads_of(soup));
+  const Mesh theirs = catmull_clark(build_mesh(soup));
+  REQUIRE(ours.positions.size() == 26);
+  // Catmull-Clark numbers vertex points 0..7, edge points 8..19, face points 20..25.
+  for (std::uint32_t v = 8; v < 26; ++v) vertex_at(ours, theirs.position(VertexId(v)));
+  for (std::uint32_t v = 0; v < 8; ++v) {
+    // n = 3: Catmull-Clark's vertex rule is MLCA's with a = 1/36 instead of 1/48.
+    CHECK(glm::length(ours.positions[v] - theirs.position(VertexId(v))) > 1e-4);
+  }
 }
 
 TEST_CASE("mlca cells: the bounded patch of section 3.2 keeps its corners and has B-spline boundary curves") {

@@ -20,6 +20,7 @@
 #include "dlfl/build_mesh.h"
 #include "dlfl/errors.h"
 #include "scheme_meshes.h"
+#include "schemes/dual.h"
 #include "test_meshes.h"
 #include "test_mlca_cells_util.h"
 
@@ -334,6 +335,20 @@ TEST_CASE("mlca cells: 3-valent polyhedra split into one proper hexahedron per v
     CHECK(twice == m.num_edges());
     CHECK(once + twice == uses.size());
   }
+  // Two tetrahedra: two polyhedra, each with its own centroid.
+  const PolygonSoup tetrahedron = test::tetrahedron_soup();
+  PolygonSoup pair = tetrahedron;
+  for (std::size_t v = 0; v < 4; ++v) pair.positions.push_back(pair.positions[v] + glm::dvec3(5, 0, 0));
+  for (std::size_t f = 0; f < 4; ++f) {
+    const auto t = tetrahedron.face(f);
+    pair.add_face({t[0] + 4, t[1] + 4, t[2] + 4});
+  }
+  const CellComplex two = polyhedron_to_hexahedra(build_mesh(pair));
+  CHECK(two.num_cells() == 8);
+  REQUIRE(two.positions.size() == 8 + 12 + 8 + 2);
+  CHECK(two.positions[28] == glm::dvec3(0, 0, 0));
+  CHECK(two.positions[29] == glm::dvec3(5, 0, 0));
+  for (std::size_t i = 0; i < 8; ++i) CHECK(two.cell(i)[7] == (i < 4 ? 28u : 29u));
   // The cube splits into the 2 x 2 x 2 grid of half cubes.
   const CellComplex cube = polyhedron_to_hexahedra(test::cube());
   for (std::size_t i = 0; i < cube.num_cells(); ++i) {
@@ -352,6 +367,17 @@ TEST_CASE("mlca cells: polyhedra that cannot be split into hexahedra are refused
   }
   CHECK_THROWS_WITH_AS(polyhedron_to_hexahedra(build_mesh(octahedron)), doctest::Contains("v0 has valence 4"),
                        TopologyError);
+  // A torus whose vertices are all 3-valent (the dual of a triangulated torus): not a sphere.
+  PolygonSoup torus = test::torus_soup(4, 3);
+  PolygonSoup triangles;
+  triangles.positions = torus.positions;
+  for (std::size_t f = 0; f < torus.num_faces(); ++f) {
+    const auto q = torus.face(f);
+    triangles.add_face({q[0], q[1], q[2]});
+    triangles.add_face({q[0], q[2], q[3]});
+  }
+  CHECK_THROWS_WITH_AS(polyhedron_to_hexahedra(dual(build_mesh(triangles))),
+                       doctest::Contains("has Euler characteristic 0"), TopologyError);
   PolygonSoup open = test::cube_soup();
   open.offsets.pop_back();
   open.indices.resize(open.offsets.back());
