@@ -147,6 +147,8 @@ TEST_CASE("mlca cells: bad input is refused with a message naming the cell or th
   CHECK(message(not_finite).find("vertex 2") != std::string::npos);
 
   CHECK_THROWS_AS(mlca_subdivide(c, -1), InvalidArgument);
+  // One quad has 4^(t+1) indices after t steps, beyond 32 bits from t = 15 on: refused before any work.
+  CHECK_THROWS_WITH_AS(mlca_subdivide(c, 15), doctest::Contains("15 iterations"), InvalidArgument);
   CHECK_THROWS_AS(multilinear_subdivide(repeated), InvalidArgument);
   CHECK_THROWS_AS(cell_average(repeated), InvalidArgument);
   CHECK(mlca_subdivide(c, 0).positions == c.positions);
