@@ -239,6 +239,32 @@ TEST_CASE("mlca cells: a crease surface inside a volume follows the bi-cubic rul
   }
 }
 
+TEST_CASE(
+    "mlca cells: a cube with crease quads on its faces has the surface of the 6 quads alone (figure 7)") {
+  const CellComplex cube = hex_grid(1, 1, 1, jittered_lattice(31));
+  CellComplex surface;
+  surface.positions = cube.positions;
+  for (int axis = 0; axis < 3; ++axis) {
+    for (int side = 0; side < 2; ++side) {
+      std::vector<std::uint32_t> quad;  // the face's corners in the cube's order, still tensor-product order
+      for (std::uint32_t k = 0; k < 8; ++k) {
+        if (int((k >> axis) & 1) == side) quad.push_back(k);
+      }
+      surface.add_cell(quad);
+    }
+  }
+  CellComplex volume = cube;
+  for (std::size_t i = 0; i < surface.num_cells(); ++i) volume.add_cell(surface.cell(i));
+  const int steps = 2;
+  const auto in_volume = fine_lattice(volume, 1, 1, steps);
+  const auto on_surface = fine_lattice(surface, 1, 1, steps);
+  const CellComplex a = mlca_subdivide(volume, steps), b = mlca_subdivide(surface, steps);
+  REQUIRE(on_surface.size() == 6 * 4 * 4 + 2);  // the 5^3 lattice minus its 3^3 interior
+  for (const auto& [fine, v] : on_surface) {
+    CHECK(glm::length(a.positions[in_volume.at(fine)] - b.positions[v]) < 1e-14);
+  }
+}
+
 TEST_CASE("mlca cells: polygons split into n quads each, sharing edge midpoints") {
   PolygonSoup soup = test::cube_soup();
   soup.add_face({0, 1, 3});  // a non-manifold triangle inside: edge 0-1 now has three faces
