@@ -14,10 +14,12 @@
 #include <vector>
 
 #include "cells/cell_average.h"
+#include "cells/convert.h"
 #include "cells/mlca.h"
 #include "cells/multilinear_subdivide.h"
 #include "dlfl/build_mesh.h"
 #include "dlfl/errors.h"
+#include "scheme_meshes.h"
 #include "schemes/catmull_clark.h"
 #include "test_meshes.h"
 #include "test_mlca_cells_util.h"
@@ -299,6 +301,13 @@ TEST_CASE("mlca cells: the composite weights are formula (2), the central weight
     cases.push_back(
         {"extraordinary edge", extruded_umbrella(n), std::uint32_t(umbrella(n).positions.size())});
   }
+  // Hexahedral splits of polyhedra: the centroid (V + E + F) is an extraordinary vertex in V hexahedra, a
+  // face centre (V + E) one in as many as the face has sides.
+  cases.push_back({"tetrahedron split, centroid", polyhedron_to_hexahedra(test::tetrahedron()), 4 + 6 + 4});
+  cases.push_back(
+      {"dodecahedron split, centroid", polyhedron_to_hexahedra(test::dodecahedron()), 20 + 30 + 12});
+  cases.push_back(
+      {"dodecahedron split, face centre", polyhedron_to_hexahedra(test::dodecahedron()), 20 + 30});
 
   for (const Case& k : cases) {
     CAPTURE(k.name);
