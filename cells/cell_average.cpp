@@ -1,5 +1,7 @@
 #include "cells/cell_average.h"
 
+#include <span>
+
 #include "dlfl/large_allocator.h"
 
 namespace dlfl {
@@ -45,24 +47,43 @@ void cell_average(CellComplex& complex) {
 }
 
 void detail::cell_average_unchecked(CellComplex& complex) {
-  detail::LargeVector<std::int8_t> dim;  // huge pages, and blocks reused from the previous step
+  const std::size_t nv = complex.positions.size(), nc = complex.num_cells();
+  auto centroid_of = [&](std::span<const std::uint32_t> cell) {
+    glm::dvec3 sum(0.0);
+    for (std::uint32_t v : cell) sum += complex.positions[v];
+    return sum / double(cell.size());
+  };
+  // Formula (1), with the division by val[v] done once per vertex at the end: sum[v] gathers the centroids of
+  // the cells of dimension dim[v] that contain v, val[v] counts them.
+  detail::LargeVector<glm::dvec3> sum(nv, glm::dvec3(0.0));  // huge pages, blocks reused from the last step
   detail::LargeVector<std::uint32_t> val;
-  dimensions_and_valences(complex, dim, val);
-  // Formula (1): each cell adds its centroid / val[v] to those of its vertices whose dim[v] is its dimension.
-  detail::LargeVector<glm::dvec3> moved(complex.positions.size(), glm::dvec3(0.0));
-  for (std::size_t i = 0; i < complex.num_cells(); ++i) {
-    const auto cell = complex.cell(i);
-    const auto d = static_cast<std::int8_t>(complex.dimension(i));
-    glm::dvec3 centroid(0.0);
-    for (std::uint32_t v : cell) centroid += complex.positions[v];
-    centroid /= double(cell.size());
-    for (std::uint32_t v : cell) {
-      if (dim[v] == d) moved[v] += centroid / double(val[v]);
+  bool mixed = false;
+  for (std::size_t i = 1; i < nc && !mixed; ++i) mixed = complex.dimension(i) != complex.dimension(0);
+  if (!mixed) {  // one dimension, so dim[v] is that dimension for every vertex in a cell: one pass
+    val.assign(nv, 0);
+    for (std::size_t i = 0; i < nc; ++i) {
+      const auto cell = complex.cell(i);
+      const glm::dvec3 centroid = centroid_of(cell);
+      for (std::uint32_t v : cell) {
+        sum[v] += centroid;
+        ++val[v];
+      }
+    }
+  } else {
+    detail::LargeVector<std::int8_t> dim;
+    dimensions_and_valences(complex, dim, val);
+    for (std::size_t i = 0; i < nc; ++i) {
+      const auto cell = complex.cell(i);
+      const auto d = static_cast<std::int8_t>(complex.dimension(i));
+      const glm::dvec3 centroid = centroid_of(cell);
+      for (std::uint32_t v : cell) {
+        if (dim[v] == d) sum[v] += centroid;
+      }
     }
   }
-  // Written back in place: the positions' memory is mapped already.
-  for (std::size_t v = 0; v < moved.size(); ++v) {
-    if (dim[v] != in_no_cell) complex.positions[v] = moved[v];
+  // Written back in place (the positions' memory is mapped already); a vertex in no cell has val 0 and stays.
+  for (std::size_t v = 0; v < nv; ++v) {
+    if (val[v] > 0) complex.positions[v] = sum[v] / double(val[v]);
   }
 }
 
