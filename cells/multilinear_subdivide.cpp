@@ -7,14 +7,22 @@
 #include <span>
 #include <string>
 
-#include "cells/huge_pages.h"
 #include "cells/vertex_set_map.h"
+#include "dlfl/block_cache.h"
 #include "dlfl/errors.h"
 #include "dlfl/large_allocator.h"
 
 namespace dlfl {
 
 namespace {
+
+// `v.reserve(n)` with a huge-page hint on the fresh buffer before anything is written to it: a
+// million-cell result is otherwise faulted in 4 KiB at a time, which costs more than the subdivision.
+template <class T>
+void reserve_huge(std::vector<T>& v, std::size_t n) {
+  v.reserve(n);
+  detail::advise_huge_pages(v.data(), v.capacity() * sizeof(T));
+}
 
 // The 3^d grid of a split d-cube. Grid point g has coordinates c_i = (g / 3^i) % 3; its level is the number
 // of coordinates equal to 1 (0: a corner of the cube, 1: an edge midpoint, 2: a face centre, 3: the centre),

@@ -1,5 +1,7 @@
 #include "dlfl/block_cache.h"
 
+#include <cstdint>
+
 #include <cstdlib>
 #include <mutex>
 #include <new>
@@ -82,9 +84,7 @@ void* acquire_block(std::size_t bytes) {
   }
   void* p = std::aligned_alloc(huge, bytes);
   if (!p) throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  ::madvise(p, bytes, MADV_HUGEPAGE);  // a hint; ignored where unsupported
-#endif
+  advise_huge_pages(p, bytes);
   return p;
 }
 
@@ -98,6 +98,17 @@ void release_block(void* p, std::size_t bytes) noexcept {
   c.shrink_for(bytes);
   c.blocks.push_back({p, bytes});
   c.total += bytes;
+}
+
+void advise_huge_pages(void* p, std::size_t bytes) noexcept {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const auto first = (reinterpret_cast<std::uintptr_t>(p) + huge - 1) & ~(huge - 1);
+  const auto last = (reinterpret_cast<std::uintptr_t>(p) + bytes) & ~(huge - 1);
+  if (first < last) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
 }
 
 }  // namespace detail

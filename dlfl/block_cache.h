@@ -26,6 +26,9 @@ namespace detail {
 void* acquire_block(std::size_t bytes);
 /// Returns a block from `acquire_block` (same size) to the cache, or to the system if the cache is full.
 void release_block(void* p, std::size_t bytes) noexcept;
+/// Marks the 2 MiB-aligned part of [p, p + bytes) for transparent huge pages, for buffers that do not come
+/// from `acquire_block` (a std::vector about to be filled). A hint: ignored where unsupported.
+void advise_huge_pages(void* p, std::size_t bytes) noexcept;
 }  // namespace detail
 
 }  // namespace dlfl
