@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 #include <optional>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "dlfl/errors.h"
@@ -42,23 +43,30 @@ class MpRandom {
 
 namespace detail {
 
+/// A number for an error message, as short as it can be ("0", "1.5", "1e-12").
+inline std::string format_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
 /// Throws InvalidArgument naming `scheme` and the parameter if tau is not in (0, 1), ratio is not positive
 /// and finite, the centre is not finite, or epsilon is not in (0, 1/2].
 inline void check_mp_params(const char* scheme, double tau, double ratio,
                             const std::optional<glm::dvec3>& center, const MpRandomChoice& random) {
   const std::string s(scheme);
   if (!(tau > 0.0 && tau < 1.0)) {
-    throw InvalidArgument(s + ": parameter tau must be in (0, 1), not " + std::to_string(tau));
+    throw InvalidArgument(s + ": parameter tau must be in (0, 1), not " + format_number(tau));
   }
   if (!(ratio > 0.0 && std::isfinite(ratio))) {
-    throw InvalidArgument(s + ": parameter ratio must be positive and finite, not " + std::to_string(ratio));
+    throw InvalidArgument(s + ": parameter ratio must be positive and finite, not " + format_number(ratio));
   }
   if (center && !(std::isfinite(center->x) && std::isfinite(center->y) && std::isfinite(center->z))) {
     throw InvalidArgument(s + ": parameter center must be finite");
   }
   if (random.enabled && !(random.epsilon > 0.0 && random.epsilon <= 0.5)) {
     throw InvalidArgument(s + ": parameter epsilon must be in (0, 0.5], not " +
-                          std::to_string(random.epsilon));
+                          format_number(random.epsilon));
   }
 }
 

@@ -96,14 +96,14 @@ MhpParams mhp_params(const SchemeParams& p) {
   for (auto [name, tau] : {std::pair{"tau_h", m.honeycomb.tau}, std::pair{"tau_p", m.pushing.tau}}) {
     if (!(tau > 0.0 && tau < 1.0)) {
       throw InvalidArgument(std::string("mhp: parameter ") + name + " must be in (0, 1), not " +
-                            std::to_string(tau));
+                            format_number(tau));
     }
   }
   for (auto [name, ratio] :
        {std::pair{"ratio_h", m.honeycomb.ratio}, std::pair{"ratio_p", m.pushing.ratio}}) {
     if (!(ratio > 0.0 && std::isfinite(ratio))) {
       throw InvalidArgument(std::string("mhp: parameter ") + name + " must be positive and finite, not " +
-                            std::to_string(ratio));
+                            format_number(ratio));
     }
   }
   check_mhp_params(m);

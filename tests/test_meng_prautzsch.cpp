@@ -404,15 +404,21 @@ TEST_CASE("mp-honeycomb: the cube by hand") {
       CHECK(a[1] == doctest::Approx(1 - tau).epsilon(1e-14));
       CHECK(a[2] == doctest::Approx(1 + tau).epsilon(1e-14));
     }
-    // Every e-face lies on its edge's bisecting plane |x| + |y| = 2 (or with z): two coordinates sum to 2.
+    // Every e-face lies on its edge's bisecting plane, e.g. x + y = 2: for some pair of axes, every vertex
+    // has |p_i| + |p_j| = 2.
     for (std::uint32_t e = 0; e < 12; ++e) {
       const FaceId hexagon(6 + e);
-      glm::dvec3 sum(0.0);
-      for (CornerId c : out.corners(hexagon)) sum += glm::abs(out.position(out.vertex(c)));
-      sum /= 6.0;  // per-axis mean of |coordinate|: 1 + ... on the two axes of the plane
-      glm::dvec3 s = sum;
-      std::sort(&s.x, &s.x + 3);
-      CHECK(s[1] + s[2] == doctest::Approx(2.0));
+      int planes = 0;
+      for (int i = 0; i < 3; ++i) {
+        const int j = (i + 1) % 3;
+        bool on = true;
+        for (CornerId c : out.corners(hexagon)) {
+          const glm::dvec3 p = glm::abs(out.position(out.vertex(c)));
+          on = on && std::abs(p[i] + p[j] - 2.0) < 1e-14;
+        }
+        planes += on;
+      }
+      CHECK(planes == 1);
     }
     check_honeycomb_step(test::cube(), h_params(tau));
   }
