@@ -106,15 +106,16 @@ Mesh mhp(const Mesh& input, const MhpParams& params, const MhpStepObserver& obse
   MpHoneycombParams h = params.honeycomb;
   MpPushingParams p = params.pushing;
   h.center = p.center = center;
-  Mesh current = input;
+  Mesh current;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const char kind = steps[i];
+    const Mesh& source = i == 0 ? input : current;  // no copy of the input
     if (kind == 'H') {
       h.random.seed = params.honeycomb.random.seed + i;
-      current = labelled(i, kind, [&] { return mp_honeycomb(current, h); });
+      current = labelled(i, kind, [&] { return mp_honeycomb(source, h); });
     } else {
       p.random.seed = params.pushing.random.seed + i;
-      current = labelled(i, kind, [&] { return mp_pushing(current, p); });
+      current = labelled(i, kind, [&] { return mp_pushing(source, p); });
     }
     if (observer) observer(i, kind, current);
   }

@@ -1,5 +1,6 @@
 #include "schemes/mp_honeycomb.h"
 
+#include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>

@@ -833,3 +833,22 @@ TEST_CASE("meng-prautzsch: registry entries record every parameter and check the
   bad("mhp", {{"epsilon", 0.0}, {"random", 1.0}}, "epsilon");
   bad("mhp", {{"tau", 0.5}}, "unknown parameter 'tau'");
 }
+
+TEST_CASE("mp-pushing: a vertex whose ring never flattens before the centre stops short of the centre") {
+  // Tetrahedron vertex (1,1,1), centre c = (0.6,0.6,0.6) (inside: on the inner side of x + y - z = 1 and the
+  // like). The midpoints around the vertex span x + y + z = 1, which lies beyond c: the extreme position is
+  // capped at the centre (s = 1), so the vertex lands at (1,1,1) + tau (c - (1,1,1)) = (0.8,0.8,0.8).
+  MpPushingParams p = p_params(0.5);
+  p.center = glm::dvec3(0.6);
+  const Mesh in = test::tetrahedron();
+  const Mesh out = mp_pushing(in, p);
+  CHECK(glm::length(out.position(VertexId(0)) - glm::dvec3(0.8)) < 1e-15);
+  check_pushing_step(in, p);
+}
+
+TEST_CASE("meng-prautzsch: removed elements in the input do not matter") {
+  Mesh m = test::cube();
+  m.delete_vertex(m.create_vertex({5, 5, 5}));  // a tombstone
+  CHECK(mp_honeycomb(m) == mp_honeycomb(test::cube()));
+  CHECK(mp_pushing(m) == mp_pushing(test::cube()));
+}
