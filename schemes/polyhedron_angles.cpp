@@ -15,13 +15,19 @@ double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
 }
 
+// The largest angle between two of the unit vectors. The pair is chosen by chord length |a - b|, which grows
+// with the angle over [0, pi] and is exact for small angles, and is cheap: one atan2 per call, not per pair.
 double diameter(const std::vector<glm::dvec3>& normals) {
-  double d = 0.0;
+  double widest = -1.0;
+  std::size_t best_i = 0, best_j = 0;
   for (std::size_t i = 0; i < normals.size(); ++i) {
-    for (std::size_t j = i + 1; j < normals.size(); ++j)
-      d = std::max(d, angle_between(normals[i], normals[j]));
+    for (std::size_t j = i + 1; j < normals.size(); ++j) {
+      const glm::dvec3 d = normals[i] - normals[j];
+      const double chord = glm::dot(d, d);
+      if (chord > widest) widest = chord, best_i = i, best_j = j;
+    }
   }
-  return d;
+  return widest < 0.0 ? 0.0 : angle_between(normals[best_i], normals[best_j]);
 }
 
 // The normals of the non-hole faces around v, appended to `out`.
