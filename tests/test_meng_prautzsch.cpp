@@ -852,3 +852,33 @@ TEST_CASE("meng-prautzsch: removed elements in the input do not matter") {
   CHECK(mp_honeycomb(m) == mp_honeycomb(test::cube()));
   CHECK(mp_pushing(m) == mp_pushing(test::cube()));
 }
+
+TEST_CASE("mhp: the paper's patterns run their eight steps with the closed-form counts") {
+  // Section 6: H4P4, P4H4, (HP)4, (H2P2)2 from the tetrahedron (V, E, F = 4, 6, 4). H: V + 2E, 4E, F + E;
+  // P: V + E, 4E, F + 2E. Every intermediate result is checked convex by the next step; the small ones are
+  // validated here too.
+  for (const char* pattern : {"H4P4", "P4H4", "(HP)4", "(H2P2)2"}) {
+    CAPTURE(pattern);
+    MhpParams params;
+    params.pattern = pattern;
+    std::size_t V = 4, E = 6, F = 4, steps = 0;
+    std::string kinds;
+    const Mesh last = mhp(test::tetrahedron(), params, [&](std::size_t, char kind, const Mesh& m) {
+      ++steps;
+      kinds += kind;
+      if (kind == 'H') {
+        V += 2 * E, F += E;
+      } else {
+        V += E, F += 2 * E;
+      }
+      E *= 4;
+      CHECK(m.num_vertices() == V);
+      CHECK(m.num_edges() == E);
+      CHECK(m.num_faces() == F);
+      if (E < 30000) CHECK(validate(m).valid());
+    });
+    CHECK(steps == 8);
+    CHECK(kinds == expand_mhp_pattern(pattern));
+    CHECK(last.num_edges() == 6 * 65536);
+  }
+}
