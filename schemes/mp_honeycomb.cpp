@@ -6,10 +6,8 @@
 #include <limits>
 #include <vector>
 
-#include "dlfl/build_mesh.h"
 #include "dlfl/errors.h"
 #include "dlfl/mesh_assembler.h"
-#include "dlfl/polygon_soup.h"
 #include "schemes/convex_polyhedron.h"
 
 namespace dlfl {
@@ -62,9 +60,17 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
   // f-face vertices. Corner j of face F (at old vertex p_j) slides up the line where the planes of the two
   // edges at p_j meet: q_j(t) = p_j + t w_j at height t above F (dot(n_F, w_j) = 1). The cross-section's
   // edge j keeps the direction of F's edge j and its length changes linearly; the first to vanish marks v_F.
-  PolygonSoup soup;
-  soup.positions.resize(std::size_t(nv) + nc);
-  for (std::uint32_t v = 0; v < nv; ++v) soup.positions[v] = m.position(VertexId(v));
+  // Output faces: the f-faces in input face order, then one hexagon per input edge (6 corners each).
+  std::vector<std::uint32_t> offsets(std::size_t(nf) + ne + 1);
+  std::vector<std::uint32_t> position(nc);  // the f-face corner made from input corner c
+  std::uint32_t k = 0;
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    offsets[f] = k;
+    for (CornerId c : m.corners(FaceId(f))) position[c.index()] = k++;
+  }
+  for (std::uint32_t e = 0; e <= ne; ++e) offsets[nf + e] = nc + 6 * e;
+  MeshAssembler out(std::size_t(nv) + nc, offsets);
+  for (std::uint32_t v = 0; v < nv; ++v) out.set_position(v, m.position(VertexId(v)));
   std::vector<glm::dvec3> slide;  // w_j of the current face, reused
   for (std::uint32_t f = 0; f < nf; ++f) {
     const FaceId face(f);
@@ -95,24 +101,31 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
     }
     j = 0;
     for (CornerId c : m.corners(face)) {
-      soup.positions[nv + c.index()] = m.position(m.vertex(c)) + tau[f] * height * slide[j++];
+      out.set_position(nv + c.index(), m.position(m.vertex(c)) + tau[f] * height * slide[j++]);
     }
   }
 
-  soup.indices.reserve(std::size_t(nc) + 6 * std::size_t(ne));
-  soup.offsets.reserve(std::size_t(nf) + ne + 1);
-  std::vector<std::uint32_t> polygon;
-  for (std::uint32_t f = 0; f < nf; ++f) {
-    polygon.clear();
-    for (CornerId c : m.corners(FaceId(f))) polygon.push_back(nv + c.index());
-    soup.add_face(polygon);
-  }
+  // Connectivity. The hexagon of edge e runs from(e), Q(next c1), Q(c1), to(e), Q(next c0), Q(c0), with
+  // c0, c1 its side corners and Q(x) the f-face vertex of corner x. Seen from an input corner x, its edge's
+  // hexagon holds three of x's half-edges: "down" Q(x) -> vertex(x), "across" Q(next x) -> Q(x) (the twin of
+  // the f-face edge) and "up" vertex(next x) -> Q(next x).
+  const auto hexagon = [&](CornerId x) { return nc + 6 * m.edge(x).index(); };
+  const auto on_side_1 = [&](CornerId x) { return m.corner(m.edge(x), 1) == x; };
+  const auto down = [&](CornerId x) { return hexagon(x) + (on_side_1(x) ? 2 : 5); };
+  const auto across = [&](CornerId x) { return hexagon(x) + (on_side_1(x) ? 1 : 4); };
+  const auto up = [&](CornerId x) { return hexagon(x) + (on_side_1(x) ? 0 : 3); };
+  for (std::uint32_t i = 0; i < nc; ++i) out.set_corner(position[i], nv + i, across(CornerId(i)));
   for (std::uint32_t e = 0; e < ne; ++e) {
     const CornerId c0 = m.corner(EdgeId(e), 0), c1 = m.corner(EdgeId(e), 1);
-    soup.add_face({m.vertex(c0).index(), nv + m.next(c1).index(), nv + c1.index(), m.vertex(c1).index(),
-                   nv + m.next(c0).index(), nv + c0.index()});
+    const std::uint32_t base = nc + 6 * e;
+    out.set_corner(base + 0, m.vertex(c0).index(), down(m.next(c1)));
+    out.set_corner(base + 1, nv + m.next(c1).index(), position[c1.index()]);
+    out.set_corner(base + 2, nv + c1.index(), up(m.prev(c1)));
+    out.set_corner(base + 3, m.vertex(c1).index(), down(m.next(c0)));
+    out.set_corner(base + 4, nv + m.next(c0).index(), position[c0.index()]);
+    out.set_corner(base + 5, nv + c0.index(), up(m.prev(c0)));
   }
-  return build_mesh(soup);
+  return out.finish();
 }
 
 }  // namespace dlfl

@@ -46,8 +46,9 @@ void check_mp_honeycomb_params(const MpHoneycombParams& params);
 /// f-face vertex at input corner k; face i is the f-face of input face i (its corner j from the input face's
 /// corner j), face F + e is the e-face of input edge e, whose corners run: from(e), the two f-face vertices
 /// of the face on side 1 (at from(e), then at to(e)), to(e), the two of the face on side 0 (at to(e), then at
-/// from(e)). Faces are counter-clockwise seen from outside; an edge's side 0 is its corner with the smaller
-/// handle (as `build_mesh` makes it). The input is not modified.
+/// from(e)). Corners are numbered face after face in that order. Faces are counter-clockwise seen from
+/// outside; an edge's side 0 is its corner with the smaller handle, and edges are numbered in the order of
+/// their side-0 corners (assembled directly with `MeshAssembler`, O(size)). The input is not modified.
 Mesh mp_honeycomb(const Mesh& mesh, const MpHoneycombParams& params = {});
 
 }  // namespace dlfl

@@ -5,10 +5,8 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
-#include "dlfl/build_mesh.h"
 #include "dlfl/errors.h"
 #include "dlfl/mesh_assembler.h"
-#include "dlfl/polygon_soup.h"
 #include "schemes/convex_polyhedron.h"
 
 namespace dlfl {
@@ -55,35 +53,44 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
     for (double& t : tau) t = rng.uniform(lo, hi);
   }
 
-  PolygonSoup soup;
-  soup.positions.resize(std::size_t(nv) + ne);
+  // Output faces: the central faces in input face order, then one triangle per input corner.
+  std::vector<std::uint32_t> offsets(std::size_t(nf) + nc + 1);
+  std::vector<std::uint32_t> position(nc);  // the central-face corner made from input corner c
+  std::uint32_t k = 0;
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    offsets[f] = k;
+    for (CornerId c : m.corners(FaceId(f))) position[c.index()] = k++;
+  }
+  for (std::uint32_t i = 0; i <= nc; ++i) offsets[nf + i] = nc + 3 * i;
+  MeshAssembler out(std::size_t(nv) + ne, offsets);
+  std::vector<glm::dvec3> point(ne);
   for (std::uint32_t e = 0; e < ne; ++e) {
     const glm::dvec3& a = m.position(m.from(EdgeId(e)));
     const glm::dvec3& b = m.position(m.to(EdgeId(e)));
-    soup.positions[nv + e] = a + fraction[e] * (b - a);
+    point[e] = a + fraction[e] * (b - a);
+    out.set_position(nv + e, point[e]);
   }
   std::vector<glm::dvec3> ring;  // edge points around the current vertex, reused
   for (std::uint32_t v = 0; v < nv; ++v) {
     const glm::dvec3& p = m.position(VertexId(v));
     ring.clear();
-    for (CornerId c : m.corners(VertexId(v))) ring.push_back(soup.positions[nv + m.edge(c).index()]);
+    for (CornerId c : m.corners(VertexId(v))) ring.push_back(point[m.edge(c).index()]);
     const double s = pushing_extreme_fraction(p, ring.data(), ring.size(), center);
-    soup.positions[v] = p + tau[v] * s * (center - p);
+    out.set_position(v, p + tau[v] * s * (center - p));
   }
 
-  soup.indices.reserve(std::size_t(nc) * 4);
-  soup.offsets.reserve(std::size_t(nf) + nc + 1);
-  std::vector<std::uint32_t> polygon;
-  for (std::uint32_t f = 0; f < nf; ++f) {
-    polygon.clear();
-    for (CornerId c : m.corners(FaceId(f))) polygon.push_back(nv + m.edge(c).index());
-    soup.add_face(polygon);
+  // Connectivity. The triangle of corner c runs vertex(c), m(edge c), m(edge prev c): its first edge is half
+  // of the old edge(c), whose other half ends the triangle of the corner across; its second faces the central
+  // face; its third is half of edge(prev c), which the triangle of the corner across starts with.
+  const auto triangle = [&](CornerId x) { return nc + 3 * x.index(); };
+  for (std::uint32_t i = 0; i < nc; ++i) {
+    const CornerId c(i);
+    out.set_corner(position[i], nv + m.edge(c).index(), triangle(m.next(c)) + 1);
+    out.set_corner(triangle(c) + 0, m.vertex(c).index(), triangle(m.next(m.opposite(c))) + 2);
+    out.set_corner(triangle(c) + 1, nv + m.edge(c).index(), position[m.prev(c).index()]);
+    out.set_corner(triangle(c) + 2, nv + m.edge(m.prev(c)).index(), triangle(m.opposite(m.prev(c))) + 0);
   }
-  for (std::uint32_t k = 0; k < nc; ++k) {
-    const CornerId c(k);
-    soup.add_face({m.vertex(c).index(), nv + m.edge(c).index(), nv + m.edge(m.prev(c)).index()});
-  }
-  return build_mesh(soup);
+  return out.finish();
 }
 
 }  // namespace dlfl

@@ -48,8 +48,10 @@ double pushing_extreme_fraction(const glm::dvec3& p, const glm::dvec3* ring, std
 /// Output handles (input read in compacted handle order): vertex i is input vertex i (moved), vertex V + e is
 /// the point on input edge e; face i is the central face of input face i (its corner j on the edge of the
 /// input face's corner j), face F + k is the triangle at input corner k: its vertex, the point on its
-/// outgoing edge, the point on its incoming edge. Faces are counter-clockwise seen from outside; an edge's
-/// side 0 is its corner with the smaller handle (as `build_mesh` makes it). The input is not modified.
+/// outgoing edge, the point on its incoming edge. Corners are numbered face after face in that order. Faces
+/// are counter-clockwise seen from outside; an edge's side 0 is its corner with the smaller handle, and edges
+/// are numbered in the order of their side-0 corners (assembled directly with `MeshAssembler`, O(size)). The
+/// input is not modified.
 Mesh mp_pushing(const Mesh& mesh, const MpPushingParams& params = {});
 
 }  // namespace dlfl

@@ -882,3 +882,39 @@ TEST_CASE("mhp: the paper's patterns run their eight steps with the closed-form 
     CHECK(last.num_edges() == 6 * 65536);
   }
 }
+
+TEST_CASE("meng-prautzsch: output handles follow the documented order") {
+  const Mesh in = random_polyhedron(29);
+  const std::uint32_t V = std::uint32_t(in.num_vertices()), F = std::uint32_t(in.num_faces());
+  const Mesh h = mp_honeycomb(in);
+  for (FaceId f : in.faces()) {
+    CornerId out = h.first_corner(f);
+    for (CornerId c : in.corners(f)) {
+      CHECK(h.vertex(out) == VertexId(V + c.index()));  // the f-face vertex of input corner c
+      out = h.next(out);
+    }
+  }
+  for (EdgeId e : in.edges()) {
+    const CornerId c0 = in.corner(e, 0), c1 = in.corner(e, 1);
+    std::vector<VertexId> ring;
+    for (CornerId c : h.corners(FaceId(F + e.index()))) ring.push_back(h.vertex(c));
+    const std::vector<VertexId> expected = {
+        in.from(e), VertexId(V + in.next(c1).index()), VertexId(V + c1.index()),
+        in.to(e),   VertexId(V + in.next(c0).index()), VertexId(V + c0.index())};
+    CHECK(ring == expected);
+  }
+  const Mesh p = mp_pushing(in);
+  for (CornerId c : in.corners()) {
+    const CornerId first = p.first_corner(FaceId(F + c.index()));
+    CHECK(p.vertex(first) == in.vertex(c));
+    CHECK(p.vertex(p.next(first)) == VertexId(V + in.edge(c).index()));
+    CHECK(p.vertex(p.prev(first)) == VertexId(V + in.edge(in.prev(c)).index()));
+  }
+  for (FaceId f : in.faces()) {
+    CornerId out = p.first_corner(f);
+    for (CornerId c : in.corners(f)) {
+      CHECK(p.vertex(out) == VertexId(V + in.edge(c).index()));
+      out = p.next(out);
+    }
+  }
+}
