@@ -57,9 +57,6 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
         slerp(face_normal[m.face(id, 0).index()], face_normal[m.face(id, 1).index()], fraction[e]);
   }
 
-  // f-face vertices. Corner j of face F (at old vertex p_j) slides up the line where the planes of the two
-  // edges at p_j meet: q_j(t) = p_j + t w_j at height t above F (dot(n_F, w_j) = 1). The cross-section's
-  // edge j keeps the direction of F's edge j and its length changes linearly; the first to vanish marks v_F.
   // Output faces: the f-faces in input face order, then one hexagon per input edge (6 corners each).
   std::vector<std::uint32_t> offsets(std::size_t(nf) + ne + 1);
   std::vector<std::uint32_t> position(nc);  // the f-face corner made from input corner c
@@ -71,6 +68,10 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
   for (std::uint32_t e = 0; e <= ne; ++e) offsets[nf + e] = nc + 6 * e;
   MeshAssembler out(std::size_t(nv) + nc, offsets);
   for (std::uint32_t v = 0; v < nv; ++v) out.set_position(v, m.position(VertexId(v)));
+
+  // f-face vertices. Corner j of face F (at old vertex p_j) slides up the line where the planes of the two
+  // edges at p_j meet: q_j(t) = p_j + t w_j at height t above F (dot(n_F, w_j) = 1). The cross-section's
+  // edge j keeps the direction of F's edge j and its length changes linearly; the first to vanish marks v_F.
   std::vector<glm::dvec3> slide;  // w_j of the current face, reused
   for (std::uint32_t f = 0; f < nf; ++f) {
     const FaceId face(f);

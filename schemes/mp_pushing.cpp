@@ -15,8 +15,9 @@ void check_mp_pushing_params(const MpPushingParams& p) {
   detail::check_mp_params("mp-pushing", p.tau, p.ratio, p.center, p.random);
 }
 
-double pushing_extreme_fraction(const glm::dvec3& p, const glm::dvec3* ring, std::size_t ring_size,
+double pushing_extreme_fraction(const glm::dvec3& p, std::span<const glm::dvec3> ring,
                                 const glm::dvec3& center) {
+  const std::size_t ring_size = ring.size();
   double extreme = 1.0;
   const glm::dvec3 towards = center - p;
   for (std::size_t i = 0; i < ring_size; ++i) {
@@ -75,7 +76,7 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
     const glm::dvec3& p = m.position(VertexId(v));
     ring.clear();
     for (CornerId c : m.corners(VertexId(v))) ring.push_back(point[m.edge(c).index()]);
-    const double s = pushing_extreme_fraction(p, ring.data(), ring.size(), center);
+    const double s = pushing_extreme_fraction(p, ring, center);
     out.set_position(v, p + tau[v] * s * (center - p));
   }
 

@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <glm/vec3.hpp>
 #include <optional>
+#include <span>
 
 #include "dlfl/mesh.h"
 #include "schemes/mp_common.h"
@@ -34,7 +35,7 @@ void check_mp_pushing_params(const MpPushingParams& params);
 /// m_(i+1), where two triangles become coplanar. s is the smallest positive such hit, and at most 1 (the
 /// centre itself: beyond it the centre would no longer be strictly inside). The edges between a triangle and
 /// the face it was cut from only get more convex as p moves in, so they set no limit.
-double pushing_extreme_fraction(const glm::dvec3& p, const glm::dvec3* ring, std::size_t ring_size,
+double pushing_extreme_fraction(const glm::dvec3& p, std::span<const glm::dvec3> ring,
                                 const glm::dvec3& center);
 
 /// One step of P on a closed, strictly convex polyhedron with the centre strictly inside (checked by

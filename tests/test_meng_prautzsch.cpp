@@ -581,7 +581,7 @@ TEST_CASE("mp-pushing: the extreme position is where the 1-ring turns flat") {
       ring.push_back(0.5 * (m.position(m.from(e)) + m.position(m.to(e))));
     }
     const glm::dvec3 p = m.position(v);
-    const double s = pushing_extreme_fraction(p, ring.data(), ring.size(), centre);
+    const double s = pushing_extreme_fraction(p, ring, centre);
     CHECK(s > 0.0);
     CHECK(s <= 1.0);
     // Flatness of the ring at edge i for the apex x: signed volume of (m_i - x, m_(i-1) - x, m_(i+1) - x).
