@@ -8,6 +8,8 @@
 #include "dlfl/statistics.h"
 #include "dlfl/validate.h"
 #include "io/mesh_io.h"
+#include "schemes/convex_polyhedron.h"
+#include "schemes/polyhedron_angles.h"
 
 namespace dlfl::tool {
 
@@ -42,12 +44,42 @@ nlohmann::ordered_json describe(const Mesh& mesh) {
   return j;
 }
 
+// The angle measurements of Meng and Prautzsch (definition 2.3), in degrees, and the convexity check around
+// the vertex centroid.
+nlohmann::ordered_json describe_angles(const Mesh& mesh) {
+  constexpr double degrees = 180.0 / 3.14159265358979323846;
+  const PolyhedronAngles a = polyhedron_angles(mesh);
+  auto summary = [](const AngleSummary& s) {
+    return nlohmann::ordered_json{{"max", s.max * degrees}, {"mean", s.mean * degrees}};
+  };
+  nlohmann::ordered_json j;
+  j["unit"] = "degree";
+  j["edge"] = summary(a.edge);
+  j["vertex"] = summary(a.vertex);
+  j["face"] = summary(a.face);
+  const auto violation = convexity_violation(mesh, vertex_centroid(mesh));
+  j["convex"] = !violation.has_value();
+  if (violation) j["not_convex_because"] = violation->message;
+  return j;
+}
+
 Action add_info(CLI::App& app) {
   auto* cmd = app.add_subcommand("info", "Print counts, topology, histograms, bounding box and hash as JSON");
-  auto path = std::make_shared<std::string>();
-  cmd->add_option("MESH", *path, "Mesh file (.obj, .off, .ply)")->required();
-  return [path] {
-    std::cout << describe(read_mesh(*path)).dump(2) << "\n";
+  struct Args {
+    std::string path;
+    bool angles = false;
+  };
+  auto a = std::make_shared<Args>();
+  cmd->add_option("MESH", a->path, "Mesh file (.obj, .off, .ply)")->required();
+  cmd->add_flag(
+      "--angles", a->angles,
+      "Add \"angles\": max and mean edge, vertex and face angles (degrees, Meng-Prautzsch definition "
+      "2.3) and whether the mesh is a strictly convex polyhedron around its vertex centroid");
+  return [a] {
+    const Mesh mesh = read_mesh(a->path);
+    nlohmann::ordered_json j = describe(mesh);
+    if (a->angles) j["angles"] = describe_angles(mesh);
+    std::cout << j.dump(2) << "\n";
     return ok;
   };
 }

@@ -1,0 +1,74 @@
+#pragma once
+// What the Meng-Prautzsch schemes H and P share: the per-element random choices (the paper, section 1.2,
+// tried choosing the ratio of every edge and the offset of every face independently), portable and
+// reproducible, and the checks of their common parameters.
+
+#include <cmath>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "dlfl/errors.h"
+
+namespace dlfl {
+
+/// Random per-element parameters. When `enabled`, every edge gets its own split fraction and every face (H)
+/// or vertex (P) its own tau, each uniform in [epsilon, 1 - epsilon]; `epsilon` is the paper's honeycomb or
+/// pushing tolerance, so edge ratios lie in [epsilon : (1 - epsilon), (1 - epsilon) : epsilon]. The same seed
+/// gives the same choices on every platform.
+struct MpRandomChoice {
+  bool enabled = false;
+  double epsilon = 0.25;  ///< in (0, 1/2]
+  std::uint64_t seed = 1;
+};
+
+/// Uniform doubles from std::mt19937_64, whose output sequence the C++ standard fixes. The mapping to
+/// [0, 1) is ours (53 high bits times 2^-53) because std::uniform_real_distribution differs between standard
+/// libraries.
+class MpRandom {
+ public:
+  explicit MpRandom(std::uint64_t seed) : engine_(seed) {}
+  /// Uniform in [lo, hi).
+  double uniform(double lo, double hi) {
+    const double unit = double(engine_() >> 11) * 0x1.0p-53;
+    return lo + (hi - lo) * unit;
+  }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+namespace detail {
+
+/// A number for an error message, as short as it can be ("0", "1.5", "1e-12").
+inline std::string format_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+/// Throws InvalidArgument naming `scheme` and the parameter if tau is not in (0, 1), ratio is not positive
+/// and finite, the centre is not finite, or epsilon is not in (0, 1/2].
+inline void check_mp_params(const char* scheme, double tau, double ratio,
+                            const std::optional<glm::dvec3>& center, const MpRandomChoice& random) {
+  const std::string s(scheme);
+  if (!(tau > 0.0 && tau < 1.0)) {
+    throw InvalidArgument(s + ": parameter tau must be in (0, 1), not " + format_number(tau));
+  }
+  if (!(ratio > 0.0 && std::isfinite(ratio))) {
+    throw InvalidArgument(s + ": parameter ratio must be positive and finite, not " + format_number(ratio));
+  }
+  if (center && !(std::isfinite(center->x) && std::isfinite(center->y) && std::isfinite(center->z))) {
+    throw InvalidArgument(s + ": parameter center must be finite");
+  }
+  if (random.enabled && !(random.epsilon > 0.0 && random.epsilon <= 0.5)) {
+    throw InvalidArgument(s + ": parameter epsilon must be in (0, 0.5], not " +
+                          format_number(random.epsilon));
+  }
+}
+
+}  // namespace detail
+}  // namespace dlfl
