@@ -1,19 +1,29 @@
-// dlfl convert IN OUT: format by extension.
+// dlfl convert IN OUT: format by extension. Cell complexes (.vtk, .obj with points or curves) convert between
+// .vtk and .obj.
 
 #include "commands.h"
+#include "io/cell_io.h"
 #include "io/mesh_io.h"
 
 namespace dlfl::tool {
 
 Action add_convert(CLI::App& app) {
-  auto* cmd = app.add_subcommand("convert", "Convert a mesh between OBJ, OFF and PLY (format by extension)");
+  auto* cmd = app.add_subcommand("convert",
+                                 "Convert a mesh between OBJ, OFF, PLY and JSON, or a cell complex between "
+                                 "VTK and OBJ (format by extension)");
   auto in = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto ascii = std::make_shared<bool>(false);
   cmd->add_option("IN", *in, "Input mesh")->required();
   cmd->add_option("OUT", *out, "Output mesh")->required();
-  cmd->add_flag("--ascii", *ascii, "Write PLY as ASCII instead of binary little-endian");
+  cmd->add_flag("--ascii", *ascii, "Write PLY or VTK as ASCII instead of binary");
   return [in, out, ascii] {
+    if (is_cell_complex_file(*in)) {
+      CellWriteOptions options;
+      options.binary_vtk = !*ascii;
+      write_cell_complex(read_cell_complex(*in), *out, options);
+      return ok;
+    }
     WriteOptions options;
     options.binary_ply = !*ascii;
     write_mesh(read_mesh(*in), *out, options);

@@ -1,12 +1,15 @@
 // dlfl info MESH: one JSON object describing the mesh.
 
+#include <glm/common.hpp>
 #include <iostream>
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
+#include "dlfl/errors.h"
 #include "dlfl/mesh_hash.h"
 #include "dlfl/statistics.h"
 #include "dlfl/validate.h"
+#include "io/cell_io.h"
 #include "io/mesh_io.h"
 #include "schemes/convex_polyhedron.h"
 #include "schemes/polyhedron_angles.h"
@@ -63,6 +66,24 @@ nlohmann::ordered_json describe_angles(const Mesh& mesh) {
   return j;
 }
 
+// A cell complex: vertices, cells per dimension and bounding box.
+nlohmann::ordered_json describe_cells(const CellComplex& complex) {
+  std::size_t per_dimension[4] = {0, 0, 0, 0};
+  for (std::size_t i = 0; i < complex.num_cells(); ++i) ++per_dimension[complex.dimension(i)];
+  glm::dvec3 lo(0.0), hi(0.0);
+  for (std::size_t v = 0; v < complex.positions.size(); ++v) {
+    lo = v == 0 ? complex.positions[v] : glm::min(lo, complex.positions[v]);
+    hi = v == 0 ? complex.positions[v] : glm::max(hi, complex.positions[v]);
+  }
+  nlohmann::ordered_json j;
+  j["vertices"] = complex.positions.size();
+  j["cells"] = complex.num_cells();
+  j["cells_by_dimension"] = {
+      {"0", per_dimension[0]}, {"1", per_dimension[1]}, {"2", per_dimension[2]}, {"3", per_dimension[3]}};
+  j["bbox"] = {{lo.x, lo.y, lo.z}, {hi.x, hi.y, hi.z}};
+  return j;
+}
+
 Action add_info(CLI::App& app) {
   auto* cmd = app.add_subcommand("info", "Print counts, topology, histograms, bounding box and hash as JSON");
   struct Args {
@@ -70,12 +91,19 @@ Action add_info(CLI::App& app) {
     bool angles = false;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("MESH", a->path, "Mesh file (.obj, .off, .ply)")->required();
+  cmd->add_option("MESH", a->path,
+                  "Mesh file (.obj, .off, .ply, .json), or cell complex (.vtk, .obj with p or l lines)")
+      ->required();
   cmd->add_flag(
       "--angles", a->angles,
       "Add \"angles\": max and mean edge, vertex and face angles (degrees, Meng-Prautzsch definition "
       "2.3) and whether the mesh is a strictly convex polyhedron around its vertex centroid");
   return [a] {
+    if (is_cell_complex_file(a->path)) {
+      if (a->angles) throw InvalidArgument("--angles measures polyhedra; " + a->path + " is a cell complex");
+      std::cout << describe_cells(read_cell_complex(a->path)).dump(2) << "\n";
+      return ok;
+    }
     const Mesh mesh = read_mesh(a->path);
     nlohmann::ordered_json j = describe(mesh);
     if (a->angles) j["angles"] = describe_angles(mesh);

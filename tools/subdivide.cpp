@@ -1,14 +1,41 @@
 // dlfl subdivide IN -s SCHEME [-n ITER] [--param NAME=VALUE ...] -o OUT [--log LOG.json [--self-contained]]
+// A cell-complex file (.vtk, or .obj with points or curves) takes the cell-complex path: -s mlca only.
 
 #include <string>
 #include <vector>
 
+#include "cells/mlca.h"
 #include "commands.h"
+#include "dlfl/errors.h"
 #include "history/editor.h"
+#include "io/cell_io.h"
 #include "io/mesh_io.h"
 #include "io/oplog.h"
 
 namespace dlfl::tool {
+
+namespace {
+
+// MLCA on a cell complex (curves, quads, hexahedra, mixed as creases). Operation logs and the editor hold
+// DLFL meshes, so they are refused here, before anything is read or written.
+template <class Args>
+Exit subdivide_cells(const Args& a) {
+  if (a.scheme != "mlca") {
+    throw InvalidArgument(a.in + " is a cell complex; only -s mlca subdivides cell complexes, not '" +
+                          a.scheme + "'");
+  }
+  if (!a.params.empty()) throw InvalidArgument("mlca takes no parameters");
+  if (!a.log.empty() || a.self_contained) {
+    throw InvalidArgument("operation logs record DLFL meshes; --log is not available for a cell complex");
+  }
+  const CellComplex result = mlca_subdivide(read_cell_complex(a.in), a.iterations);
+  CellWriteOptions write;
+  write.binary_vtk = !a.ascii;
+  write_cell_complex(result, a.out, write);
+  return ok;
+}
+
+}  // namespace
 
 Action add_subdivide(CLI::App& app) {
   auto* cmd =
@@ -21,7 +48,10 @@ Action add_subdivide(CLI::App& app) {
     bool ascii = false;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("IN", a->in, "Input mesh (.obj, .off, .ply, .json)")->required();
+  cmd->add_option("IN", a->in,
+                  "Input mesh (.obj, .off, .ply, .json), or cell complex (.vtk, .obj with p or l lines) for "
+                  "-s mlca")
+      ->required();
   std::string names;
   for (const auto& n : scheme_names()) names += (names.empty() ? "" : ", ") + n;
   cmd->add_option("-s,--scheme", a->scheme, "Scheme: " + names)->required();
@@ -32,8 +62,9 @@ Action add_subdivide(CLI::App& app) {
   cmd->add_option("--log", a->log, "Write the operation log (JSON) here");
   cmd->add_flag("--self-contained", a->self_contained,
                 "Embed the input mesh in the log so it replays anywhere");
-  cmd->add_flag("--ascii", a->ascii, "Write PLY as ASCII instead of binary little-endian");
+  cmd->add_flag("--ascii", a->ascii, "Write PLY or VTK as ASCII instead of binary");
   return [a] {
+    if (is_cell_complex_file(a->in)) return subdivide_cells(*a);
     SchemeParams params;
     for (const auto& p : a->params) {
       auto [name, value] = parse_param(p);
