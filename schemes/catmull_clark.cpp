@@ -5,6 +5,7 @@
 
 #include "dlfl/errors.h"
 #include "dlfl/mesh_assembler.h"
+#include "schemes/quad_split.h"
 
 namespace dlfl {
 
@@ -54,21 +55,8 @@ Mesh catmull_clark(const Mesh& input) {
     const double n = valence[v];
     out.set_position(v, sums[v] / (n * n) + (n - 3.0) / n * m.position(VertexId(v)));
   }
-  // Quad k for corner c: (vertex point, edge point out, face point, edge point in). Twins follow from the
-  // corners around it: across the outgoing edge lies the quad of the next corner around the vertex, and so
-  // on.
-  for (std::uint32_t k = 0; k < nc; ++k) {
-    const CornerId c(k);
-    const CornerId p = m.prev(c);
-    const std::uint32_t q = 4 * k;
-    out.set_corner(q + 0, m.vertex(c).index(), 4 * m.next(m.opposite(c)).index() + 3);
-    out.set_corner(q + 1, edge_base + m.edge(c).index(), 4 * m.next(c).index() + 2);
-    out.set_corner(q + 2, face_base + m.face(c).index(), 4 * p.index() + 1);
-    out.set_corner(q + 3, edge_base + m.edge(p).index(), 4 * m.opposite(p).index() + 0);
-  }
-  for (std::uint32_t k = 0; k < nc; ++k) {
-    if (m.is_hole(m.face(CornerId(k)))) out.set_hole(k, true);
-  }
+  // Quad k for corner k: (vertex point, edge point out, face point, edge point in).
+  detail::assemble_quad_split(m, out);
   return out.finish();
 }
 

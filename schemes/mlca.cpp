@@ -5,32 +5,10 @@
 
 #include "dlfl/errors.h"
 #include "dlfl/mesh_assembler.h"
+#include "schemes/quad_split.h"
 
 namespace dlfl {
 namespace {
-
-// The connectivity of one quad split, shared by both steps: corner k of `m` (dense) becomes quad k =
-// (vertex point, edge point of the edge leaving k, face point, edge point of the edge arriving), with vertex
-// points at 0..nv-1, edge points at nv..nv+ne-1, face points after. Twins follow from the corners around the
-// quad's corner: across the outgoing edge lies the quad of the next corner around the vertex, and so on.
-void assemble_quad_split(const Mesh& m, MeshAssembler& out) {
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());
-  const std::uint32_t edge_base = nv, face_base = nv + ne;
-  for (std::uint32_t k = 0; k < nc; ++k) {
-    const CornerId c(k);
-    const CornerId p = m.prev(c);
-    const std::uint32_t q = 4 * k;
-    out.set_corner(q + 0, m.vertex(c).index(), 4 * m.next(m.opposite(c)).index() + 3);
-    out.set_corner(q + 1, edge_base + m.edge(c).index(), 4 * m.next(c).index() + 2);
-    out.set_corner(q + 2, face_base + m.face(c).index(), 4 * p.index() + 1);
-    out.set_corner(q + 3, edge_base + m.edge(p).index(), 4 * m.opposite(p).index() + 0);
-  }
-  for (std::uint32_t k = 0; k < nc; ++k) {
-    if (m.is_hole(m.face(CornerId(k)))) out.set_hole(k, true);
-  }
-}
 
 void refuse_point_spheres(const Mesh& m, const char* scheme) {
   for (VertexId v : m.vertices()) {
@@ -53,7 +31,7 @@ Mesh split_dense(const Mesh& m) {
     for (CornerId c : m.corners(FaceId(f))) sum += m.position(m.vertex(c));
     out.set_position(nv + ne + f, sum / double(m.size(FaceId(f))));
   }
-  assemble_quad_split(m, out);
+  detail::assemble_quad_split(m, out);
   return out.finish();
 }
 
@@ -138,7 +116,7 @@ Mesh mlca_quad_step(const Mesh& m) {
       out.set_position(v, p);  // only holes around: no cell to average over
     }
   }
-  assemble_quad_split(m, out);
+  detail::assemble_quad_split(m, out);
   return out.finish();
 }
 

@@ -53,7 +53,8 @@ inline Mesh dodecahedron() { return build_mesh(dodecahedron_soup()); }
 /// operators: the vertical edge at angle 0 is subdivided at its midpoint (its two quads become pentagons),
 /// the bottom heptagon is cut by the diagonal b1-b6 into a triangle (b0 b1 b6) and a hexagon, and the quad
 /// between angles 3 and 4 by a diagonal into two triangles. Faces: 1 heptagon, 1 hexagon, 2 pentagons,
-/// 4 quads, 3 triangles; V = 15, E = 24, F = 11; genus 0; convex (every face is planar or a triangle).
+/// 4 quads, 3 triangles; V = 15, E = 24, F = 11; genus 0; every face planar, but not strictly convex (the
+/// subdivided vertical edge is straight, and each cut face lies in the plane of its neighbour).
 inline Mesh mixed_polyhedron() {
   PolygonSoup s;
   const int n = 7;

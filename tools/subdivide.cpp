@@ -57,7 +57,8 @@ Action add_subdivide(CLI::App& app) {
   cmd->add_option("-s,--scheme", a->scheme, "Scheme: " + names)->required();
   cmd->add_option("-n,--iterations", a->iterations, "Number of steps (default 1)")->check(CLI::Range(0, 64));
   cmd->add_option("--param", a->params,
-                  "Scheme parameter NAME=VALUE (repeatable), e.g. t=0.5, a=0.7, a0=0.45");
+                  "Scheme parameter NAME=VALUE (repeatable): a number (t=0.5, a=0.7) or text (center=0,0,0, "
+                  "pattern=H4P4)");
   cmd->add_option("-o,--output", a->out, "Output mesh (format by extension)")->required();
   cmd->add_option("--log", a->log, "Write the operation log (JSON) here");
   cmd->add_flag("--self-contained", a->self_contained,
