@@ -14,22 +14,6 @@
 namespace dlfl {
 namespace {
 
-std::string lower_extension(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext;
-}
-
-std::string read_file(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw IoError("cannot open: it is a directory", name);
-  std::ifstream in(path, std::ios::in | std::ios::binary);
-  if (!in) throw IoError("cannot open: " + std::generic_category().message(errno), name);
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  return io_detail::read_all(in, name, ec ? 0 : static_cast<std::size_t>(size));
-}
-
 [[noreturn]] void unknown_extension(const std::filesystem::path& path) {
   throw IoError("unknown cell complex format '" + path.extension().string() + "' (use .vtk or .obj)",
                 path.string());
@@ -38,15 +22,15 @@ std::string read_file(const std::filesystem::path& path) {
 }  // namespace
 
 CellComplex read_cell_complex(const std::filesystem::path& path) {
-  const std::string ext = lower_extension(path);
-  if (ext == ".vtk") return parse_vtk(read_file(path), path.string());
-  if (ext == ".obj") return parse_cell_obj(read_file(path), path.string());
+  const std::string ext = io_detail::lower_extension(path);
+  if (ext == ".vtk") return parse_vtk(io_detail::read_file(path), path.string());
+  if (ext == ".obj") return parse_cell_obj(io_detail::read_file(path), path.string());
   unknown_extension(path);
 }
 
 void write_cell_complex(const CellComplex& complex, const std::filesystem::path& path,
                         const CellWriteOptions& options) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = io_detail::lower_extension(path);
   if (ext != ".vtk" && ext != ".obj") unknown_extension(path);
   check_cell_complex(complex);  // before any file is touched
   if (ext == ".vtk") {
@@ -66,11 +50,11 @@ void write_cell_complex(const CellComplex& complex, const std::filesystem::path&
 }
 
 bool is_cell_complex_file(const std::filesystem::path& path) {
-  const std::string ext = lower_extension(path);
+  const std::string ext = io_detail::lower_extension(path);
   if (ext == ".vtk") return true;
   if (ext != ".obj") return false;
   try {
-    return obj_has_cell_statements(read_file(path));
+    return obj_has_cell_statements(io_detail::read_file(path));
   } catch (const IoError&) {
     return false;
   }

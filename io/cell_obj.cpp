@@ -19,23 +19,7 @@ CellComplex parse_cell_obj(std::string_view text, const std::string& name) {
     list.clear();
     const auto defined = static_cast<std::int64_t>(out.positions.size());
     while (!s.at_eol()) {
-      const std::int64_t i = s.integer("vertex index", '/');
-      std::int64_t index = 0;
-      if (i > 0) {
-        index = i - 1;
-        if (index >= static_cast<std::int64_t>(io_detail::max_indices)) {
-          s.fail("vertex index " + std::to_string(i) + " is out of range");
-        }
-      } else if (i < 0) {
-        index = defined + i;
-        if (index < 0) {
-          s.fail("relative vertex index " + std::to_string(i) + " is out of range (" +
-                 std::to_string(defined) + " vertices so far)");
-        }
-      } else {
-        s.fail("vertex index 0 is out of range (OBJ indices start at 1)");
-      }
-      list.push_back(static_cast<std::uint32_t>(index));
+      list.push_back(io_detail::obj_vertex_index(s, defined));
     }
   };
   auto add = [&](std::span<const std::uint32_t> cell) {

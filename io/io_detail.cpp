@@ -1,9 +1,29 @@
 #include "io/io_detail.h"
 
+#include <cctype>
+#include <cerrno>
+#include <fstream>
 #include <istream>
 #include <ostream>
+#include <system_error>
 
 namespace dlfl::io_detail {
+
+std::string read_file(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw IoError("cannot open: it is a directory", name);
+  std::ifstream in(path, std::ios::in | std::ios::binary);
+  if (!in) throw IoError("cannot open: " + std::generic_category().message(errno), name);
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  return read_all(in, name, ec ? 0 : static_cast<std::size_t>(size));
+}
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
 
 std::string read_all(std::istream& in, const std::string& name, std::size_t size_hint) {
   if (size_hint == 0) {

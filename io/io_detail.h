@@ -10,6 +10,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <glm/vec3.hpp>
 #include <iosfwd>
 #include <memory>
@@ -26,6 +27,13 @@ namespace dlfl::io_detail {
 /// hint (the file size, if known) lets a file be read in one call. Throws IoError naming `name` on a read
 /// error.
 std::string read_all(std::istream& in, const std::string& name, std::size_t size_hint = 0);
+
+/// Reads a whole file into memory. Throws IoError naming the path if it is a directory, cannot be opened or
+/// fails to read.
+std::string read_file(const std::filesystem::path& path);
+
+/// The file's extension in lower case, with its dot (".obj"); empty if it has none.
+std::string lower_extension(const std::filesystem::path& path);
 
 /// The parsers proper, on a whole file in memory. The istream overloads in mesh_io.h read the stream and call
 /// these.
@@ -158,16 +166,50 @@ class LineScanner {
   bool comments_;
 };
 
-/// Converts between the host's byte order and little-endian (a no-op on little-endian hosts).
-template <class T>
-T little_endian(T value) {
-  if constexpr (std::endian::native == std::endian::big) {
+/// Reads one OBJ vertex reference (`i`, `i/t`, `i/t/n`) and returns its 0-based index. A negative `i` counts
+/// back from the `defined` vertices read so far; a positive one is checked against the vertex count by the
+/// caller, after the whole file (a statement may name a vertex defined further down). IoError at the current
+/// line for 0 or an index out of range.
+inline std::uint32_t obj_vertex_index(LineScanner& s, std::int64_t defined) {
+  const std::int64_t i = s.integer("vertex index", '/');
+  if (i > 0) {
+    if (i - 1 >= static_cast<std::int64_t>(max_indices)) {
+      s.fail("vertex index " + std::to_string(i) + " is out of range");
+    }
+    return static_cast<std::uint32_t>(i - 1);
+  }
+  if (i < 0) {
+    if (defined + i < 0) {
+      s.fail("relative vertex index " + std::to_string(i) + " is out of range (" + std::to_string(defined) +
+             " vertices so far)");
+    }
+    return static_cast<std::uint32_t>(defined + i);
+  }
+  s.fail("vertex index 0 is out of range (OBJ indices start at 1)");
+}
+
+/// Converts between the host's byte order and `order` (a no-op when they agree).
+template <std::endian order, class T>
+T with_byte_order(T value) {
+  if constexpr (std::endian::native != order) {
     unsigned char bytes[sizeof(T)];
     std::memcpy(bytes, &value, sizeof(T));
     std::reverse(bytes, bytes + sizeof(T));
     std::memcpy(&value, bytes, sizeof(T));
   }
   return value;
+}
+
+/// Converts between the host's byte order and little-endian (PLY binary).
+template <class T>
+T little_endian(T value) {
+  return with_byte_order<std::endian::little>(value);
+}
+
+/// Converts between the host's byte order and big-endian (VTK legacy binary).
+template <class T>
+T big_endian(T value) {
+  return with_byte_order<std::endian::big>(value);
 }
 
 /// Collects output in a large buffer and hands it to the stream in big blocks; numbers are formatted with

@@ -15,8 +15,7 @@
 namespace dlfl {
 
 MeshFormat format_for_path(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = io_detail::lower_extension(path);
   if (ext == ".obj") return MeshFormat::obj;
   if (ext == ".off") return MeshFormat::off;
   if (ext == ".ply") return MeshFormat::ply;
@@ -42,12 +41,7 @@ Mesh build_mesh(const ParsedPolygons& parsed, const std::string& name) {
 Mesh read_mesh(const std::filesystem::path& path) {
   const MeshFormat format = format_for_path(path);
   const std::string name = path.string();
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw IoError("cannot open: it is a directory", name);
-  std::ifstream in(path, std::ios::in | std::ios::binary);
-  if (!in) throw IoError("cannot open: " + std::generic_category().message(errno), name);
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  const std::string text = io_detail::read_all(in, name, ec ? 0 : static_cast<std::size_t>(size));
+  const std::string text = io_detail::read_file(path);
   switch (format) {
     case MeshFormat::obj:
       return build_mesh(io_detail::parse_obj_text(text, name), name);

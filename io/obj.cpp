@@ -29,22 +29,7 @@ ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
       const auto defined = static_cast<std::int64_t>(soup.positions.size());
       std::size_t count = 0;
       while (!s.at_eol()) {
-        const std::int64_t i = s.integer("vertex index", '/');
-        std::int64_t index = 0;
-        if (i > 0) {
-          index = i - 1;
-          if (index >= static_cast<std::int64_t>(max_indices))
-            s.fail("vertex index " + std::to_string(i) + " is out of range");
-        } else if (i < 0) {
-          index = defined + i;
-          if (index < 0) {
-            s.fail("relative vertex index " + std::to_string(i) + " is out of range (" +
-                   std::to_string(defined) + " vertices so far)");
-          }
-        } else {
-          s.fail("vertex index 0 is out of range (OBJ indices start at 1)");
-        }
-        soup.indices.push_back(static_cast<std::uint32_t>(index));
+        soup.indices.push_back(obj_vertex_index(s, defined));
         ++count;
       }
       if (count < 3) s.fail("face has " + std::to_string(count) + " vertices; at least 3 are needed");

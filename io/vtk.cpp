@@ -19,17 +19,6 @@
 namespace dlfl {
 namespace {
 
-template <class T>
-T swap_big_endian(T value) {
-  if constexpr (std::endian::native == std::endian::little) {
-    unsigned char bytes[sizeof(T)];
-    std::memcpy(bytes, &value, sizeof(T));
-    std::reverse(bytes, bytes + sizeof(T));
-    std::memcpy(&value, bytes, sizeof(T));
-  }
-  return value;
-}
-
 bool equals_nocase(std::string_view a, std::string_view b) {
   return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
            return std::toupper(static_cast<unsigned char>(x)) == std::toupper(static_cast<unsigned char>(y));
@@ -159,7 +148,7 @@ class VtkScanner {
       T value;
       std::memcpy(&value, data_.data() + pos_, sizeof(T));
       pos_ += sizeof(T);
-      out(i, swap_big_endian(value));
+      out(i, io_detail::big_endian(value));
     }
   }
   /// Bytes left: a bound on how many values the file can still hold.
@@ -504,7 +493,7 @@ void write_vtk(std::ostream& out, const CellComplex& complex, bool binary) {
   }
   io_detail::BlockWriter w(out);
   auto big_endian = [&](auto value) {
-    const auto swapped = swap_big_endian(value);
+    const auto swapped = io_detail::big_endian(value);
     const char* bytes = reinterpret_cast<const char*>(&swapped);
     for (std::size_t i = 0; i < sizeof(swapped); ++i) w.put(bytes[i]);
   };
@@ -566,14 +555,7 @@ void write_vtk(std::ostream& out, const CellComplex& complex, bool binary) {
 }
 
 CellComplex read_vtk(const std::filesystem::path& path) {
-  const std::string name = path.string();
-  std::error_code ec;
-  if (std::filesystem::is_directory(path, ec)) throw IoError("cannot open: it is a directory", name);
-  std::ifstream in(path, std::ios::in | std::ios::binary);
-  if (!in) throw IoError("cannot open: " + std::generic_category().message(errno), name);
-  const std::uintmax_t size = std::filesystem::file_size(path, ec);
-  const std::string data = io_detail::read_all(in, name, ec ? 0 : static_cast<std::size_t>(size));
-  return parse_vtk(data, name);
+  return parse_vtk(io_detail::read_file(path), path.string());
 }
 
 void write_vtk(const CellComplex& complex, const std::filesystem::path& path, bool binary) {
