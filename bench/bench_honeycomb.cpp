@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "bench_meshes.h"
 #include "bench_util.h"
 #include "dlfl/block_cache.h"
 #include "dlfl/build_mesh.h"
@@ -13,21 +14,6 @@
 using namespace dlfl;
 
 namespace {
-Mesh torus(int n) {
-  PolygonSoup s;
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / n;
-      s.positions.push_back(
-          {(2 + 0.5 * std::cos(v)) * std::cos(u), (2 + 0.5 * std::cos(v)) * std::sin(u), 0.5 * std::sin(v)});
-    }
-  }
-  auto id = [&](int i, int j) { return std::uint32_t((i % n) * n + (j % n)); };
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) s.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-  }
-  return build_mesh(s);
-}
 
 struct Result {
   bench::Timing time;
@@ -36,7 +22,8 @@ struct Result {
 };
 
 Result measure(int n, int runs) {
-  const Mesh input = torus(n);  // F = V = n^2, so one step gives F' = F + V = 2 n^2
+  const Mesh input =
+      build_mesh(bench::torus_soup(n, n));  // F = V = n^2, so one step gives F' = F + V = 2 n^2
   std::size_t faces = 0;
   const bench::Timing t = bench::time_runs(runs, [&] { faces = honeycomb(input).num_faces(); });
   // Peak memory of one more step, on its own: reset the high-water mark, run, read it.

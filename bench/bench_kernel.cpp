@@ -8,37 +8,13 @@
 #include <numbers>
 #include <string>
 
+#include "bench_meshes.h"
 #include "bench_util.h"
 #include "dlfl/build_mesh.h"
 #include "dlfl/validate.h"
 #include "io/mesh_io.h"
 
 using namespace dlfl;
-
-namespace {
-PolygonSoup torus(int n, int m) {
-  PolygonSoup s;
-  s.positions.reserve(std::size_t(n) * m);
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < m; ++j) {
-      const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / m;
-      s.positions.push_back(
-          {(2 + 0.5 * std::cos(v)) * std::cos(u), (2 + 0.5 * std::cos(v)) * std::sin(u), 0.5 * std::sin(v)});
-    }
-  }
-  s.indices.reserve(4 * std::size_t(n) * m);
-  s.offsets.reserve(std::size_t(n) * m + 1);
-  auto id = [&](int i, int j) { return std::uint32_t((i % n) * m + (j % m)); };
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < m; ++j) {
-      const std::uint32_t q[4] = {id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)};
-      s.indices.insert(s.indices.end(), q, q + 4);
-      s.offsets.push_back(static_cast<std::uint32_t>(s.indices.size()));
-    }
-  }
-  return s;
-}
-}  // namespace
 
 int main(int argc, char** argv) {
   const long faces = argc > 1 ? std::stol(argv[1]) : 1000000;
@@ -49,7 +25,8 @@ int main(int argc, char** argv) {
   std::printf("closed quad torus %d x %d = %d faces, median of %d runs\n", side, side, side * side, runs);
 
   PolygonSoup soup;
-  bench::row("generate polygon soup", bench::median_seconds(runs, [&] { soup = torus(side, side); }));
+  bench::row("generate polygon soup",
+             bench::median_seconds(runs, [&] { soup = bench::torus_soup(side, side); }));
   Mesh mesh;
   const bench::Timing build = bench::time_runs(runs, [&] { mesh = build_mesh(soup); });
   bench::row("build DLFL (build_mesh)", build.median, "best " + std::to_string(build.best));

@@ -10,6 +10,7 @@
 #include <numbers>
 #include <string>
 
+#include "bench_meshes.h"
 #include "bench_util.h"
 #include "cells/cell_average.h"
 #include "cells/mlca.h"
@@ -39,23 +40,6 @@ CellComplex hex_grid(int n) {
     }
   }
   return c;
-}
-
-// An n x n torus of quads, as a polygon soup (faces as cycles).
-PolygonSoup torus(int n) {
-  PolygonSoup s;
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      const double u = 2 * std::numbers::pi * i / n, v = 2 * std::numbers::pi * j / n;
-      s.positions.push_back(
-          {(2 + 0.5 * std::cos(v)) * std::cos(u), (2 + 0.5 * std::cos(v)) * std::sin(u), 0.5 * std::sin(v)});
-    }
-  }
-  auto id = [&](int i, int j) { return std::uint32_t((i % n) * n + (j % n)); };
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) s.add_face({id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)});
-  }
-  return s;
 }
 
 // The same quads as a cell complex: the cycle a b c d is the tensor-product quad (a, b, d, c).
@@ -108,7 +92,7 @@ int main(int argc, char** argv) {
   std::printf("one MLCA step to about 1M cells, %d runs each\n", runs);
   const double steal = bench::steal_seconds();
   measure_complex("mlca hexahedra (50^3 grid)", hex_grid(50), runs);
-  const PolygonSoup soup = torus(500);
+  const PolygonSoup soup = bench::torus_soup(500, 500);
   measure_complex("mlca quads (500^2 torus)", quads_of(soup), runs);
   const Mesh mesh = build_mesh(soup);
   std::size_t faces = 0;
