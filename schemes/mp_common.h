@@ -10,6 +10,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "dlfl/errors.h"
 
@@ -68,6 +69,25 @@ inline void check_mp_params(const char* scheme, double tau, double ratio,
     throw InvalidArgument(s + ": parameter epsilon must be in (0, 0.5], not " +
                           format_number(random.epsilon));
   }
+}
+
+/// The per-element choices of one H or P step: a split fraction per edge (ratio / (1 + ratio)) and a tau per
+/// face (H) or vertex (P), or, with `random` on, all of them drawn uniformly in [epsilon, 1 - epsilon] from
+/// the seed, edges first, then the other elements, in handle order.
+struct MpChoices {
+  std::vector<double> fraction;
+  std::vector<double> tau;
+};
+inline MpChoices mp_choices(std::size_t edges, std::size_t elements, double ratio, double tau,
+                            const MpRandomChoice& random) {
+  MpChoices c{std::vector<double>(edges, ratio / (1.0 + ratio)), std::vector<double>(elements, tau)};
+  if (random.enabled) {
+    MpRandom rng(random.seed);
+    const double lo = random.epsilon, hi = 1.0 - random.epsilon;
+    for (double& s : c.fraction) s = rng.uniform(lo, hi);
+    for (double& t : c.tau) t = rng.uniform(lo, hi);
+  }
+  return c;
 }
 
 }  // namespace detail

@@ -36,15 +36,8 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
   const auto nf = static_cast<std::uint32_t>(m.num_faces());
   const auto nc = static_cast<std::uint32_t>(m.num_corners());
 
-  // Per-edge split fractions of the exterior angle, per-face taus: edges first, then faces, in handle order.
-  std::vector<double> fraction(ne, params.ratio / (1.0 + params.ratio));
-  std::vector<double> tau(nf, params.tau);
-  if (params.random.enabled) {
-    MpRandom rng(params.random.seed);
-    const double lo = params.random.epsilon, hi = 1.0 - params.random.epsilon;
-    for (double& s : fraction) s = rng.uniform(lo, hi);
-    for (double& t : tau) t = rng.uniform(lo, hi);
-  }
+  // Per-edge split fractions of the exterior angle, per-face taus (drawn from the seed when random).
+  const auto [fraction, tau] = detail::mp_choices(ne, nf, params.ratio, params.tau, params.random);
 
   std::vector<glm::dvec3> face_normal(nf);
   for (std::uint32_t f = 0; f < nf; ++f) face_normal[f] = face_plane(m, FaceId(f)).normal;

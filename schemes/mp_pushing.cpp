@@ -44,15 +44,8 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
   const auto nf = static_cast<std::uint32_t>(m.num_faces());
   const auto nc = static_cast<std::uint32_t>(m.num_corners());
 
-  // Per-edge split fractions, per-vertex taus: edges first, then vertices, in handle order.
-  std::vector<double> fraction(ne, params.ratio / (1.0 + params.ratio));
-  std::vector<double> tau(nv, params.tau);
-  if (params.random.enabled) {
-    MpRandom rng(params.random.seed);
-    const double lo = params.random.epsilon, hi = 1.0 - params.random.epsilon;
-    for (double& s : fraction) s = rng.uniform(lo, hi);
-    for (double& t : tau) t = rng.uniform(lo, hi);
-  }
+  // Per-edge split fractions of the exterior angle, per-vertex taus (drawn from the seed when random).
+  const auto [fraction, tau] = detail::mp_choices(ne, nv, params.ratio, params.tau, params.random);
 
   // Output faces: the central faces in input face order, then one triangle per input corner.
   std::vector<std::uint32_t> offsets(std::size_t(nf) + nc + 1);
