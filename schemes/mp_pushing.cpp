@@ -44,7 +44,7 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
   const auto nf = static_cast<std::uint32_t>(m.num_faces());
   const auto nc = static_cast<std::uint32_t>(m.num_corners());
 
-  // Per-edge split fractions of the exterior angle, per-vertex taus (drawn from the seed when random).
+  // Per-edge split fractions along the edge, per-vertex taus (drawn from the seed when random).
   const auto [fraction, tau] = detail::mp_choices(ne, nv, params.ratio, params.tau, params.random);
 
   // Output faces: the central faces in input face order, then one triangle per input corner.
