@@ -4,6 +4,7 @@
 
 #include "dlfl/errors.h"
 #include "schemes/convex_polyhedron.h"
+#include "schemes/mp_common.h"
 
 namespace dlfl {
 namespace {
@@ -35,8 +36,11 @@ class PatternParser {
       unit = char(std::toupper(static_cast<unsigned char>(c)));
       ++pos_;
     } else if (c == '(') {
+      // Groups nest by recursion: bound the depth so that no pattern can exhaust the stack.
+      if (++depth_ > mhp_max_depth) fail("groups nested deeper than " + std::to_string(mhp_max_depth));
       ++pos_;
       unit = sequence();
+      --depth_;
       if (pos_ >= text_.size()) fail("expected ')'");
       ++pos_;
     } else {
@@ -73,6 +77,7 @@ class PatternParser {
 
   std::string_view text_;
   std::size_t pos_ = 0;
+  std::size_t depth_ = 0;
 };
 
 // Reruns `step`, putting "mhp step i (X): " in front of the message of any error, keeping its type.
@@ -94,14 +99,20 @@ std::string expand_mhp_pattern(std::string_view pattern) { return PatternParser(
 
 void check_mhp_params(const MhpParams& params) {
   expand_mhp_pattern(params.pattern);
-  check_mp_honeycomb_params(params.honeycomb);
-  check_mp_pushing_params(params.pushing);
-  detail::check_mp_params("mhp", 0.5, 1.0, params.center, {});  // the centre only
+  detail::check_mp_params("mhp", params.honeycomb.tau, params.honeycomb.ratio, params.center,
+                          params.honeycomb.random);
+  detail::check_mp_params("mhp", params.pushing.tau, params.pushing.ratio, params.center,
+                          params.pushing.random);
 }
 
 Mesh mhp(const Mesh& input, const MhpParams& params, const MhpStepObserver& observer) {
   check_mhp_params(params);
   const std::string steps = expand_mhp_pattern(params.pattern);
+  // Every step multiplies the edges by 4: refuse at once a pattern whose end could not be stored, rather than
+  // after minutes of steps.
+  double edges = double(input.num_edges());
+  for (std::size_t i = 0; i < steps.size(); ++i) edges *= 4.0;
+  detail::check_output_size(("mhp pattern '" + params.pattern + "'").c_str(), edges);
   const glm::dvec3 center = params.center.value_or(vertex_centroid(input));
   MpHoneycombParams h = params.honeycomb;
   MpPushingParams p = params.pushing;

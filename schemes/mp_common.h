@@ -13,6 +13,8 @@
 #include <vector>
 
 #include "dlfl/errors.h"
+#include "dlfl/mesh.h"
+#include "schemes/convex_polyhedron.h"
 
 namespace dlfl {
 
@@ -52,7 +54,8 @@ inline std::string format_number(double x) {
 }
 
 /// Throws InvalidArgument naming `scheme` and the parameter if tau is not in (0, 1), ratio is not positive
-/// and finite, the centre is not finite, or epsilon is not in (0, 1/2].
+/// and finite, the centre is not finite, or epsilon is not in (0, 1/2] (checked whether or not random choices
+/// are on, so that a wrong value never passes unnoticed).
 inline void check_mp_params(const char* scheme, double tau, double ratio,
                             const std::optional<glm::dvec3>& center, const MpRandomChoice& random) {
   const std::string s(scheme);
@@ -65,10 +68,33 @@ inline void check_mp_params(const char* scheme, double tau, double ratio,
   if (center && !(std::isfinite(center->x) && std::isfinite(center->y) && std::isfinite(center->z))) {
     throw InvalidArgument(s + ": parameter center must be finite");
   }
-  if (random.enabled && !(random.epsilon > 0.0 && random.epsilon <= 0.5)) {
+  if (!(random.epsilon > 0.0 && random.epsilon <= 0.5)) {
     throw InvalidArgument(s + ": parameter epsilon must be in (0, 0.5], not " +
                           format_number(random.epsilon));
   }
+}
+
+/// Throws InvalidArgument if a step with `edges_out` output edges would have more corners (2 per edge) than
+/// 32-bit handles can number, before anything is allocated.
+inline void check_output_size(const char* scheme, double edges_out) {
+  if (2.0 * edges_out > double(0xFFFFFFFEu)) {
+    throw InvalidArgument(std::string(scheme) + ": the result would have " + format_number(edges_out) +
+                          " edges, more than 32-bit handles can hold");
+  }
+}
+
+/// The result of an H or P step must be a strictly convex polyhedron like its input. Legal but extreme
+/// parameters (tau near 0 or 1, a ratio of 1e17) can round a new point onto an old one or flatten an edge;
+/// then the caller is told which parameters to move away from their bounds, instead of the next step
+/// failing on its input. O(size).
+inline Mesh require_convex_result(Mesh result, const glm::dvec3& centre, const char* scheme, double tau,
+                                  double ratio) {
+  if (auto violation = convexity_violation(result, centre)) {
+    throw InvalidArgument(std::string(scheme) + ": tau = " + format_number(tau) + " and ratio = " +
+                          format_number(ratio) + " give a result that is not strictly convex (" +
+                          violation->message + "); move them away from their bounds");
+  }
+  return result;
 }
 
 /// The per-element choices of one H or P step: a split fraction per edge (ratio / (1 + ratio)) and a tau per

@@ -30,7 +30,9 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
   check_mp_honeycomb_params(params);
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  require_convex_polyhedron(m, params.center.value_or(vertex_centroid(m)), "mp-honeycomb");
+  const glm::dvec3 center = params.center.value_or(vertex_centroid(m));
+  require_convex_polyhedron(m, center, "mp-honeycomb");
+  detail::check_output_size("mp-honeycomb", 4.0 * double(m.num_edges()));
   const auto nv = static_cast<std::uint32_t>(m.num_vertices());
   const auto ne = static_cast<std::uint32_t>(m.num_edges());
   const auto nf = static_cast<std::uint32_t>(m.num_faces());
@@ -119,7 +121,7 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
     out.set_corner(base + 4, nv + m.next(c0).index(), position[c0.index()]);
     out.set_corner(base + 5, nv + c0.index(), up(m.prev(c0)));
   }
-  return out.finish();
+  return detail::require_convex_result(out.finish(), center, "mp-honeycomb", params.tau, params.ratio);
 }
 
 }  // namespace dlfl

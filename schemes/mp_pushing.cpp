@@ -39,6 +39,7 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
   const glm::dvec3 center = params.center.value_or(vertex_centroid(m));
   require_convex_polyhedron(m, center, "mp-pushing");
+  detail::check_output_size("mp-pushing", 4.0 * double(m.num_edges()));
   const auto nv = static_cast<std::uint32_t>(m.num_vertices());
   const auto ne = static_cast<std::uint32_t>(m.num_edges());
   const auto nf = static_cast<std::uint32_t>(m.num_faces());
@@ -84,7 +85,7 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
     out.set_corner(triangle(c) + 1, nv + m.edge(c).index(), position[m.prev(c).index()]);
     out.set_corner(triangle(c) + 2, nv + m.edge(m.prev(c)).index(), triangle(m.opposite(m.prev(c))) + 0);
   }
-  return out.finish();
+  return detail::require_convex_result(out.finish(), center, "mp-pushing", params.tau, params.ratio);
 }
 
 }  // namespace dlfl

@@ -4,6 +4,7 @@
 #include <exception>
 #include <iostream>
 #include <map>
+#include <new>
 
 #include "commands.h"
 
@@ -36,6 +37,9 @@ int main(int argc, char** argv) {
   }
   try {
     for (const CLI::App* sub : app.get_subcommands()) return actions.at(sub)();
+  } catch (const std::bad_alloc&) {
+    std::cerr << "error: out of memory (the result is too large for this machine; try fewer iterations)\n";
+    return failure;
   } catch (const std::exception& e) {
     std::cerr << "error: " << e.what() << "\n";
     return failure;
