@@ -12,6 +12,10 @@ void CellComplex::add_cell(std::span<const std::uint32_t> cell) {
     throw InvalidArgument("cell " + std::to_string(num_cells()) + " has " + std::to_string(cell.size()) +
                           " vertices; a d-cube has 1, 2, 4 or 8");
   }
+  if (indices.size() + cell.size() > 0xFFFFFFFFu) {  // offsets are 32-bit
+    throw InvalidArgument("cell " + std::to_string(num_cells()) +
+                          ": more than 2^32 - 1 vertex indices in one complex");
+  }
   indices.insert(indices.end(), cell.begin(), cell.end());
   offsets.push_back(static_cast<std::uint32_t>(indices.size()));
 }
@@ -27,11 +31,15 @@ void check_cell_complex(const CellComplex& complex) {
       throw InvalidArgument("cell complex: vertex " + std::to_string(v) + " has a non-finite coordinate");
     }
   }
+  // All offsets first: a cell is read only once its range is known to lie inside `indices`.
+  for (std::size_t i = 0; i < complex.num_cells(); ++i) {
+    if (complex.offsets[i + 1] < complex.offsets[i] || complex.offsets[i + 1] > complex.indices.size()) {
+      throw InvalidArgument("cell complex: offsets decrease or run past the index list at cell " +
+                            std::to_string(i));
+    }
+  }
   const std::size_t nv = complex.positions.size();
   for (std::size_t i = 0; i < complex.num_cells(); ++i) {
-    if (complex.offsets[i + 1] < complex.offsets[i]) {
-      throw InvalidArgument("cell complex: offsets decrease at cell " + std::to_string(i));
-    }
     const auto cell = complex.cell(i);
     if (CellComplex::dimension_of_size(cell.size()) < 0) {
       throw InvalidArgument("cell " + std::to_string(i) + " has " + std::to_string(cell.size()) +

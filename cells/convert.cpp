@@ -26,6 +26,12 @@ void check_soup(const PolygonSoup& soup) {
   if (soup.offsets.empty() || soup.offsets.front() != 0 || soup.offsets.back() != soup.indices.size()) {
     throw InvalidArgument("polygons to quads: offsets do not describe the index list");
   }
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {  // all ranges first, before any face is read
+    if (soup.offsets[f + 1] < soup.offsets[f] || soup.offsets[f + 1] > soup.indices.size()) {
+      throw InvalidArgument("polygons to quads: offsets decrease or run past the index list at face " +
+                            std::to_string(f));
+    }
+  }
   // last_face[v] = 1 + the last face that used v: finds a repeated vertex in O(face size).
   std::vector<std::uint32_t> last_face(nv, 0);
   for (std::size_t f = 0; f < soup.num_faces(); ++f) {
@@ -166,6 +172,9 @@ CellComplex polyhedron_to_hexahedra(const Mesh& input) {
     }
   }
 
+  if (std::uint64_t(nv) + ne + nf + centroid.size() > 0xFFFFFFFEu || 8 * std::uint64_t(nv) > 0xFFFFFFFEu) {
+    throw InvalidArgument("polyhedron to hexahedra: the result would need more than 32-bit indices");
+  }
   const std::uint32_t edge_base = nv, face_base = nv + ne, centroid_base = nv + ne + nf;
   CellComplex out;
   out.positions.reserve(std::size_t(centroid_base) + centroid.size());

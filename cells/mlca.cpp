@@ -1,5 +1,6 @@
 #include "cells/mlca.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <string>
 
@@ -17,8 +18,10 @@ CellComplex mlca_subdivide(const CellComplex& complex, int iterations) {
   // Refuse a result beyond 32-bit indices before spending the time: after t steps a d-cell has become 2^(dt)
   // cells of 2^d vertices each.
   std::uint64_t final_indices = 0;
+  int top_dimension = 0;
   for (std::size_t i = 0; i < complex.num_cells(); ++i) {
-    const int bits = complex.dimension(i) * (iterations + 1);
+    top_dimension = std::max(top_dimension, complex.dimension(i));
+    const std::int64_t bits = std::int64_t(complex.dimension(i)) * (std::int64_t(iterations) + 1);
     final_indices += bits >= 33 ? std::uint64_t(1) << 33 : std::uint64_t(1) << bits;
     if (final_indices > 0xFFFFFFFFu) {
       throw InvalidArgument("mlca: " + std::to_string(iterations) +
@@ -26,6 +29,8 @@ CellComplex mlca_subdivide(const CellComplex& complex, int iterations) {
     }
   }
   if (iterations == 0) return complex;
+  // Points alone never split and never move (0-cells are interpolated): one step is as good as any number.
+  if (top_dimension == 0) iterations = 1;
   CellComplex result = detail::multilinear_subdivide_unchecked(complex);
   detail::cell_average_unchecked(result);
   for (int i = 1; i < iterations; ++i) {

@@ -69,7 +69,9 @@ class VertexSetMap {
   static std::size_t spread(const Key& key) {
     std::uint64_t h = 0;
     for (std::size_t j = 1; j < K; ++j) h = (h + key[j]) * 0x9E3779B97F4A7C15ull;
-    return h >> 40;
+    // All 64 bits, folded: the caller masks to its region, which can exceed any fixed number of bits (one
+    // vertex may start tens of millions of keys), and then probing would pile into a fraction of it.
+    return static_cast<std::size_t>(h ^ (h >> 32));
   }
 
   LargeVector<std::size_t> start_;  // huge pages, and blocks reused from the previous step

@@ -22,6 +22,11 @@ CellComplex read_cell_complex(const std::filesystem::path& path);
 void write_cell_complex(const CellComplex& complex, const std::filesystem::path& path,
                         const CellWriteOptions& options = {});
 
+/// Throws IoError, as `write_cell_complex` would, if `path` cannot hold `complex`: an extension other than
+/// .vtk and .obj, hexahedra for .obj, or more cells and indices than a VTK legacy file counts. Subdivision
+/// keeps the dimensions of the cells, so a caller can refuse before long work rather than after it.
+void check_cell_complex_output(const CellComplex& complex, const std::filesystem::path& path);
+
 /// True for a file that only the cell-complex path can read: any .vtk file, and an .obj file with `p` or `l`
 /// statements (points or curves). An .obj of polygons only, any other extension, and an .obj that cannot be
 /// read give false (the polygon-mesh path then reads it, or reports the error).

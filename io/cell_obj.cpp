@@ -53,8 +53,8 @@ CellComplex parse_cell_obj(std::string_view text, const std::string& name) {
       read_indices();
       if (list.size() != 4) {
         s.fail("face has " + std::to_string(list.size()) +
-               " vertices; a cell complex holds quads only (load it as a polygon mesh, where -s mlca splits "
-               "polygons into quads)");
+               " vertices; a cell complex (a file with p or l statements) holds quads only: split the "
+               "polygons into quads, or drop the p and l statements to load it as a polygon mesh");
       }
       const std::uint32_t quad[4] = {list[0], list[1], list[3], list[2]};  // cyclic -> tensor order
       add(quad);

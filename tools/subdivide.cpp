@@ -28,7 +28,9 @@ Exit subdivide_cells(const Args& a) {
   if (!a.log.empty() || a.self_contained) {
     throw InvalidArgument("operation logs record DLFL meshes; --log is not available for a cell complex");
   }
-  const CellComplex result = mlca_subdivide(read_cell_complex(a.in), a.iterations);
+  const CellComplex input = read_cell_complex(a.in);
+  check_cell_complex_output(input, a.out);  // the output format, before the work (dimensions are kept)
+  const CellComplex result = mlca_subdivide(input, a.iterations);
   CellWriteOptions write;
   write.binary_vtk = !a.ascii;
   write_cell_complex(result, a.out, write);
