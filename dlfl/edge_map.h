@@ -57,7 +57,12 @@ class EdgeMap {
     std::uint32_t target;
     std::uint32_t value;
   };
-  static std::size_t spread(std::uint32_t b) { return (std::uint64_t(b) * 0x9E3779B97F4A7C15ull) >> 40; }
+  // All 64 bits, folded: a region can outgrow any fixed number of bits (one vertex of degree 2^24 and more),
+  // and then probing would pile into a fraction of it.
+  static std::size_t spread(std::uint32_t b) {
+    const std::uint64_t h = std::uint64_t(b) * 0x9E3779B97F4A7C15ull;
+    return static_cast<std::size_t>(h ^ (h >> 32));
+  }
 
   std::vector<std::size_t> start_;
   std::vector<Slot> slots_;
