@@ -8,10 +8,14 @@
 // degrees they are attained between two normals; above, possibly between a normal and a point inside an arc
 // (the regular tetrahedron's vertex angle is 125.26 degrees, not the 109.47 between two normals); and 180
 // degrees also between two points inside two crossing arcs (the tetrahedron's face angle). All three are
-// searched. Faces without a normal (holes, faces of zero area) are left out: around a boundary vertex G_v is
-// then an open chain of arcs, one arc per edge between two faces that have normals, and a normal with no such
-// neighbour is a lone point. Two consecutive normals that are equal or exactly opposite (no minor arc) count
-// as their endpoints only. On a non-convex mesh G_v may cross itself; it is still taken as its arcs.
+// searched. Points inside the polygons need no search: such a point can be moved farther from the other one
+// until 180 degrees; and on a convex polyhedron, where every G_v lies in an open hemisphere and the polygons
+// of a face's vertices all contain the face's normal, neither can contain the antipodal image of the other,
+// so an antipodal pair of a 1-ring always shows on the arcs. Faces without a normal (holes, faces of zero
+// area) are left out: around a boundary vertex G_v is then an open chain of arcs, one arc per edge between
+// two faces that have normals, and a normal with no such neighbour is a lone point. Two consecutive normals
+// that are equal or exactly opposite (no minor arc) count as their endpoints only. On a non-convex mesh G_v
+// may cross itself; it is still taken as its arcs.
 
 #include <cstddef>
 
