@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "convex_meshes.h"
 #include "dlfl/build_mesh.h"
 #include "dlfl/errors.h"
 #include "dlfl/validate.h"
@@ -27,6 +28,9 @@
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::angle;
+using test::hull_soup;
+using test::normal_of;
 
 namespace {
 
@@ -34,31 +38,6 @@ constexpr double pi = std::numbers::pi;
 constexpr double phi = std::numbers::phi;
 
 // ---- meshes ---------------------------------------------------------------------------------------------
-
-// The convex hull of points in general position (no four coplanar), by brute force: a triangle is a face when
-// every other point lies strictly on one side of its plane; it is oriented to face away from them.
-PolygonSoup hull_soup(const std::vector<glm::dvec3>& points) {
-  PolygonSoup s;
-  s.positions = points;
-  const auto n = static_cast<std::uint32_t>(points.size());
-  for (std::uint32_t i = 0; i < n; ++i) {
-    for (std::uint32_t j = i + 1; j < n; ++j) {
-      for (std::uint32_t k = j + 1; k < n; ++k) {
-        const glm::dvec3 normal = glm::cross(points[j] - points[i], points[k] - points[i]);
-        int above = 0, below = 0;
-        for (std::uint32_t l = 0; l < n; ++l) {
-          if (l == i || l == j || l == k) continue;
-          const double d = glm::dot(normal, points[l] - points[i]);
-          above += d > 1e-9;
-          below += d < -1e-9;
-        }
-        if (below == int(n) - 3) s.add_face({i, j, k});
-        if (above == int(n) - 3) s.add_face({i, k, j});
-      }
-    }
-  }
-  return s;
-}
 
 // The regular icosahedron: the 12 points (0, +-1, +-phi) and their cyclic permutations, edge length 2.
 Mesh icosahedron() {
@@ -107,18 +86,6 @@ Mesh dented_octahedron() {
 }
 
 // ---- independent geometry -------------------------------------------------------------------------------
-
-// Outward unit normal from three consecutive vertices (the faces tested are strictly convex polygons).
-glm::dvec3 normal_of(const Mesh& m, FaceId f) {
-  const CornerId c = m.first_corner(f);
-  const glm::dvec3 a = m.position(m.vertex(c)), b = m.position(m.vertex(m.next(c))),
-                   d = m.position(m.vertex(m.next(m.next(c))));
-  return glm::normalize(glm::cross(b - a, d - b));
-}
-
-double angle(const glm::dvec3& a, const glm::dvec3& b) {
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
 
 // Largest distance of a face's vertices from the plane through its first three.
 double planarity_error(const Mesh& m, FaceId f) {

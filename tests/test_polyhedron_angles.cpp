@@ -14,12 +14,15 @@
 #include <string>
 #include <vector>
 
+#include "convex_meshes.h"
 #include "dlfl/build_mesh.h"
 #include "dlfl/errors.h"
 #include "schemes/polyhedron_angles.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::angle;
+using test::normal_of;
 
 namespace {
 
@@ -60,27 +63,8 @@ Mesh open_pentagonal_pyramid() {
   return build_mesh(s);
 }
 
-// The convex hull of points in general position, by brute force over all triangles: a triangle is a face when
-// every other point is strictly on its inner side.
-Mesh hull(const std::vector<glm::dvec3>& points) {
-  PolygonSoup s;
-  s.positions = points;
-  const auto n = static_cast<std::uint32_t>(points.size());
-  for (std::uint32_t i = 0; i < n; ++i) {
-    for (std::uint32_t j = 0; j < n; ++j) {
-      for (std::uint32_t k = 0; k < n; ++k) {
-        if (!(i < j && i < k && j != k)) continue;  // each oriented triangle once, smallest index first
-        const glm::dvec3 normal = glm::cross(points[j] - points[i], points[k] - points[i]);
-        bool face = true;
-        for (std::uint32_t l = 0; l < n && face; ++l) {
-          if (l != i && l != j && l != k) face = glm::dot(normal, points[l] - points[i]) < -1e-9;
-        }
-        if (face) s.add_face({i, j, k});
-      }
-    }
-  }
-  return build_mesh(s);
-}
+// The convex hull of points in general position (tests/convex_meshes.h).
+Mesh hull(const std::vector<glm::dvec3>& points) { return build_mesh(test::hull_soup(points)); }
 
 // `count` random points on the sphere, squashed to an ellipsoid: few points give wide Gaussian polygons.
 Mesh random_hull(std::uint64_t seed, int count) {
@@ -95,18 +79,6 @@ Mesh random_hull(std::uint64_t seed, int count) {
 }
 
 // ---- brute force ------------------------------------------------------------------------------------------
-
-// Outward unit normal of a planar face with a convex first corner.
-glm::dvec3 normal_of(const Mesh& m, FaceId f) {
-  const CornerId c = m.first_corner(f);
-  const glm::dvec3 a = m.position(m.vertex(c)), b = m.position(m.vertex(m.next(c))),
-                   d = m.position(m.vertex(m.next(m.next(c))));
-  return glm::normalize(glm::cross(b - a, d - b));
-}
-
-double angle(const glm::dvec3& a, const glm::dvec3& b) {
-  return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
-}
 
 // Points of v's Gaussian polygon: its normals, and `samples` steps along each great-circle arc between the
 // normals of consecutive non-hole faces around v (slerp, endpoints included). Returns the longest arc.
