@@ -44,7 +44,7 @@ class VertexSetMap {
   std::uint32_t insert(const Key& key, std::uint32_t value) {
     Slot* region = slots_.data() + start_[key[0]];
     const std::size_t mask = start_[key[0] + 1] - start_[key[0]] - 1;
-    for (std::size_t i = spread(key) & mask;; i = (i + 1) & mask) {
+    for (std::size_t i = first_slot(key, mask);; i = (i + 1) & mask) {
       Slot& slot = region[i];
       if (slot.rest[0] == none) {
         for (std::size_t j = 1; j < K; ++j) slot.rest[j - 1] = key[j];
@@ -66,12 +66,12 @@ class VertexSetMap {
     }
     return true;
   }
-  static std::size_t spread(const Key& key) {
+  // Fibonacci hashing: the top log2(region size) bits of the product, the best-mixed ones, whatever the size
+  // of the region (one vertex may start tens of millions of keys; a fixed shift would not cover its region).
+  static std::size_t first_slot(const Key& key, std::size_t mask) {
     std::uint64_t h = 0;
     for (std::size_t j = 1; j < K; ++j) h = (h + key[j]) * 0x9E3779B97F4A7C15ull;
-    // All 64 bits, folded: the caller masks to its region, which can exceed any fixed number of bits (one
-    // vertex may start tens of millions of keys), and then probing would pile into a fraction of it.
-    return static_cast<std::size_t>(h ^ (h >> 32));
+    return mask == 0 ? 0 : static_cast<std::size_t>(h >> std::countl_zero(std::uint64_t(mask)));
   }
 
   LargeVector<std::size_t> start_;  // huge pages, and blocks reused from the previous step

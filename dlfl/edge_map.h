@@ -31,7 +31,7 @@ class EdgeMap {
   std::uint32_t insert(std::uint32_t a, std::uint32_t b, std::uint32_t value) {
     Slot* region = slots_.data() + start_[a];
     const std::size_t mask = start_[a + 1] - start_[a] - 1;
-    for (std::size_t i = spread(b) & mask;; i = (i + 1) & mask) {
+    for (std::size_t i = first_slot(b, mask);; i = (i + 1) & mask) {
       if (region[i].target == b) return region[i].value;
       if (region[i].target == none) {
         region[i] = {b, value};
@@ -46,7 +46,7 @@ class EdgeMap {
     if (size == 0) return none;
     const Slot* region = slots_.data() + start_[a];
     const std::size_t mask = size - 1;
-    for (std::size_t i = spread(b) & mask;; i = (i + 1) & mask) {
+    for (std::size_t i = first_slot(b, mask);; i = (i + 1) & mask) {
       if (region[i].target == b) return region[i].value;
       if (region[i].target == none) return none;
     }
@@ -57,11 +57,11 @@ class EdgeMap {
     std::uint32_t target;
     std::uint32_t value;
   };
-  // All 64 bits, folded: a region can outgrow any fixed number of bits (one vertex of degree 2^24 and more),
-  // and then probing would pile into a fraction of it.
-  static std::size_t spread(std::uint32_t b) {
+  // Fibonacci hashing: the top log2(region size) bits of the product, the best-mixed ones, whatever the size
+  // of the region (a vertex of degree 2^24 and more gets a region that a fixed shift would not cover).
+  static std::size_t first_slot(std::uint32_t b, std::size_t mask) {
     const std::uint64_t h = std::uint64_t(b) * 0x9E3779B97F4A7C15ull;
-    return static_cast<std::size_t>(h ^ (h >> 32));
+    return mask == 0 ? 0 : static_cast<std::size_t>(h >> std::countl_zero(std::uint64_t(mask)));
   }
 
   std::vector<std::size_t> start_;
