@@ -88,6 +88,8 @@ TEST_CASE("oracle: catmull-clark agrees with CGAL on closed meshes") {
     SurfaceMesh sm = to_cgal(soup);
     CGAL::Subdivision_method_3::CatmullClark_subdivision(sm, CGAL::parameters::number_of_iterations(2));
     const Mesh ours = catmull_clark(catmull_clark(build_mesh(soup)));
+    // Every corner becomes a quad, so step 1 has C quads and step 2 has 4 C.
+    CHECK(ours.num_faces() == 4 * soup.indices.size());
     require_same(to_polygons(ours), from_cgal(sm));
   }
 }
@@ -101,6 +103,10 @@ TEST_CASE("oracle: doo-sabin agrees with CGAL on closed meshes") {
     SurfaceMesh sm = to_cgal(soup);
     CGAL::Subdivision_method_3::DooSabin_subdivision(sm, CGAL::parameters::number_of_iterations(2));
     const Mesh ours = doo_sabin(doo_sabin(build_mesh(soup)));
+    // Step 1: F1 = V + E + F, with one vertex per corner (V1 = C), each 4-valent (E1 = 2 C); step 2:
+    // F2 = V1 + E1 + F1 = 3 C + V + E + F, with E = C / 2 on a closed mesh.
+    const std::size_t c = soup.indices.size();
+    CHECK(ours.num_faces() == 3 * c + soup.positions.size() + c / 2 + soup.num_faces());
     require_same(to_polygons(ours), from_cgal(sm));
   }
 }
@@ -115,6 +121,7 @@ TEST_CASE("oracle: loop agrees with CGAL on closed triangle meshes") {
     SurfaceMesh sm = to_cgal(soup);
     CGAL::Subdivision_method_3::Loop_subdivision(sm, CGAL::parameters::number_of_iterations(2));
     const Mesh ours = loop(loop(build_mesh(soup)));
+    CHECK(ours.num_faces() == 16 * soup.num_faces());  // 4 F per step
     require_same(to_polygons(ours), from_cgal(sm));
   }
 }
@@ -129,6 +136,7 @@ TEST_CASE("oracle: sqrt3 agrees with CGAL on closed triangle meshes") {
     SurfaceMesh sm = to_cgal(soup);
     CGAL::Subdivision_method_3::Sqrt3_subdivision(sm, CGAL::parameters::number_of_iterations(2));
     const Mesh ours = sqrt3(sqrt3(build_mesh(soup)));
+    CHECK(ours.num_faces() == 9 * soup.num_faces());  // 3 F per step
     require_same(to_polygons(ours), from_cgal(sm));
   }
 }
