@@ -35,11 +35,7 @@ CellComplex parse_cell_obj(std::string_view text, const std::string& name) {
   while (s.next_line()) {
     const std::string_view keyword = s.token();
     if (keyword == "v") {
-      glm::dvec3 p;
-      p.x = s.number("x coordinate");
-      p.y = s.number("y coordinate");
-      p.z = s.number("z coordinate");
-      out.positions.push_back(p);
+      out.positions.push_back(s.point());
     } else if (keyword == "p") {
       read_indices();
       if (list.empty()) s.fail("point statement without a vertex");

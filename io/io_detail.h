@@ -98,6 +98,15 @@ class LineScanner {
     return {p_, static_cast<std::size_t>(e - p_)};
   }
 
+  /// Reads three finite numbers, the x, y and z coordinates of a point.
+  glm::dvec3 point() {
+    glm::dvec3 p;
+    p.x = number("x coordinate");
+    p.y = number("y coordinate");
+    p.z = number("z coordinate");
+    return p;
+  }
+
   /// Reads a finite floating-point number; `what` names it in errors ("x coordinate").
   double number(const char* what) {
     if (at_eol()) fail(std::string("missing ") + what);

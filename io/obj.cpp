@@ -17,11 +17,7 @@ ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
     const std::string_view keyword = s.token();
     if (keyword == "v") {
       // A 4th value (w) or vertex colours may follow x y z; they are ignored.
-      glm::dvec3 p;
-      p.x = s.number("x coordinate");
-      p.y = s.number("y coordinate");
-      p.z = s.number("z coordinate");
-      soup.positions.push_back(p);
+      soup.positions.push_back(s.point());
       parsed.vertex_lines.push_back(s.line());
     } else if (keyword == "f") {
       // Negative indices count back from the vertices read so far; positive ones are checked after the whole

@@ -57,11 +57,7 @@ ParsedPolygons parse_off_text(std::string_view text, const std::string& name) {
     if (!next_content_line()) {
       s.fail("file ends after " + std::to_string(i) + " of " + std::to_string(vertices) + " vertices");
     }
-    glm::dvec3 p;
-    p.x = s.number("x coordinate");
-    p.y = s.number("y coordinate");
-    p.z = s.number("z coordinate");
-    soup.positions.push_back(p);
+    soup.positions.push_back(s.point());
     parsed.vertex_lines.push_back(s.line());
   }
 

@@ -135,17 +135,7 @@ TEST_CASE("doo-sabin: a face of 70 sides (closed form) agrees with the weights s
           {r * std::cos(u), r * std::sin(u), z == 0 ? -1.0 + 0.1 * std::cos(5.0 * i) : 1.0});
     }
   }
-  std::vector<std::uint32_t> bottom, top;
-  for (int i = 0; i < n; ++i) {
-    bottom.push_back(std::uint32_t(n - 1 - i));
-    top.push_back(std::uint32_t(n + i));
-  }
-  s.add_face(bottom);
-  s.add_face(top);
-  for (int i = 0; i < n; ++i) {
-    const std::uint32_t a = i, b = (i + 1) % n;
-    s.add_face({a, b, n + b, n + a});
-  }
+  test::add_prism_faces(s, n);
   const Mesh in = build_mesh(s);
   const Mesh out = doo_sabin(in);
   REQUIRE(validate(out).valid());

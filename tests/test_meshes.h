@@ -99,6 +99,22 @@ inline PolygonSoup grid_soup(int n, int m) {
   return s;
 }
 
+/// Adds the faces of an n-gonal prism to `s`, whose positions are the bottom ring (0 .. n-1) and then the top
+/// ring (n .. 2n-1), both counter-clockwise seen from above: the two n-gons and n side quads, outward.
+inline void add_prism_faces(PolygonSoup& s, int n) {
+  std::vector<std::uint32_t> bottom, top;
+  for (int i = 0; i < n; ++i) {
+    bottom.push_back(std::uint32_t(n - 1 - i));
+    top.push_back(std::uint32_t(n + i));
+  }
+  s.add_face(bottom);
+  s.add_face(top);
+  for (int i = 0; i < n; ++i) {
+    const auto a = std::uint32_t(i), b = std::uint32_t((i + 1) % n);
+    s.add_face({a, b, std::uint32_t(n + b), std::uint32_t(n + a)});
+  }
+}
+
 inline Mesh tetrahedron() { return build_mesh(tetrahedron_soup()); }
 inline Mesh cube() { return build_mesh(cube_soup()); }
 

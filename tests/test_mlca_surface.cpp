@@ -40,17 +40,7 @@ PolygonSoup prism_soup(int n) {
       s.positions.push_back({std::cos(u), std::sin(u), z == 0 ? -1.0 : 1.0});
     }
   }
-  std::vector<std::uint32_t> bottom, top;
-  for (int i = 0; i < n; ++i) {
-    bottom.push_back(std::uint32_t(n - 1 - i));
-    top.push_back(std::uint32_t(n + i));
-  }
-  s.add_face(bottom);
-  s.add_face(top);
-  for (int i = 0; i < n; ++i) {
-    const auto a = std::uint32_t(i), b = std::uint32_t((i + 1) % n);
-    s.add_face({a, b, std::uint32_t(n + b), std::uint32_t(n + a)});
-  }
+  test::add_prism_faces(s, n);
   return s;
 }
 
