@@ -7,9 +7,9 @@
 
 #include "bench_meshes.h"
 #include "bench_util.h"
-#include "dlfl/block_cache.h"
-#include "dlfl/build_mesh.h"
-#include "schemes/honeycomb.h"
+#include <dlfl/detail/block_cache.h>
+#include <dlfl/build_mesh.h>
+#include <dlfl/schemes/honeycomb.h>
 
 using namespace dlfl;
 

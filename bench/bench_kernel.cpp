@@ -10,9 +10,9 @@
 
 #include "bench_meshes.h"
 #include "bench_util.h"
-#include "dlfl/build_mesh.h"
-#include "dlfl/validate.h"
-#include "io/mesh_io.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/validate.h>
+#include <dlfl/io/mesh_io.h>
 
 using namespace dlfl;
 

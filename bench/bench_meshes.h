@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <numbers>
 
-#include "dlfl/polygon_soup.h"
+#include <dlfl/polygon_soup.h>
 
 namespace dlfl::bench {
 

@@ -12,11 +12,11 @@
 
 #include "bench_meshes.h"
 #include "bench_util.h"
-#include "cells/cell_average.h"
-#include "cells/mlca.h"
-#include "cells/multilinear_subdivide.h"
-#include "dlfl/build_mesh.h"
-#include "schemes/catmull_clark.h"
+#include <dlfl/cells/cell_average.h>
+#include <dlfl/cells/mlca_subdivide.h>
+#include <dlfl/cells/multilinear_subdivide.h>
+#include <dlfl/build_mesh.h>
+#include <dlfl/schemes/catmull_clark.h>
 
 using namespace dlfl;
 

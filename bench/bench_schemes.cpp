@@ -15,16 +15,16 @@
 
 #include "bench_meshes.h"
 #include "bench_util.h"
-#include "dlfl/build_mesh.h"
-#include "schemes/catmull_clark.h"
-#include "schemes/doo_sabin.h"
-#include "schemes/dual.h"
-#include "schemes/dual_honeycomb_dual.h"
-#include "schemes/honeycomb.h"
-#include "schemes/loop.h"
-#include "schemes/mlca.h"
-#include "schemes/sqrt3.h"
-#include "schemes/zhang_wang_honeycomb.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/schemes/catmull_clark.h>
+#include <dlfl/schemes/doo_sabin.h>
+#include <dlfl/schemes/dual.h>
+#include <dlfl/schemes/dual_honeycomb_dual.h>
+#include <dlfl/schemes/honeycomb.h>
+#include <dlfl/schemes/loop.h>
+#include <dlfl/schemes/mlca_polygons.h>
+#include <dlfl/schemes/sqrt3.h>
+#include <dlfl/schemes/zhang_wang_honeycomb.h>
 
 using namespace dlfl;
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "cells/cell_complex.h"
+#include <dlfl/cells/cell_complex.h>
 
 namespace dlfl::test {
 

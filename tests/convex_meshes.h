@@ -7,8 +7,8 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
-#include "dlfl/mesh.h"
-#include "dlfl/polygon_soup.h"
+#include <dlfl/mesh.h>
+#include <dlfl/polygon_soup.h>
 
 namespace dlfl::test {
 

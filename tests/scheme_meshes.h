@@ -5,14 +5,14 @@
 #include <cmath>
 #include <numbers>
 
-#include "dlfl/build_mesh.h"
-#include "dlfl/mesh.h"
-#include "dlfl/polygon_soup.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/mesh.h>
+#include <dlfl/polygon_soup.h>
 #include "test_meshes.h"
 
 namespace dlfl::test {
 
-/// The regular dodecahedron of examples/dodecahedron.obj (circumradius sqrt(3), centred at the origin):
+/// The regular dodecahedron of data/dodecahedron.obj (circumradius sqrt(3), centred at the origin):
 /// 20 vertices, 30 edges, 12 pentagons, counter-clockwise from outside.
 inline PolygonSoup dodecahedron_soup() {
   const double phi = std::numbers::phi, inv = 1.0 / std::numbers::phi;

@@ -2,8 +2,8 @@
 
 #include <doctest/doctest.h>
 
-#include "dlfl/block_cache.h"
-#include "dlfl/large_allocator.h"
+#include <dlfl/detail/block_cache.h>
+#include <dlfl/detail/large_allocator.h>
 
 using namespace dlfl;
 

@@ -4,7 +4,7 @@
 
 #include <vector>
 
-#include "dlfl/validate.h"
+#include <dlfl/validate.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

@@ -6,10 +6,10 @@
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
 
-#include "dlfl/errors.h"
-#include "dlfl/validate.h"
+#include <dlfl/errors.h>
+#include <dlfl/validate.h>
 #include "scheme_meshes.h"
-#include "schemes/catmull_clark.h"
+#include <dlfl/schemes/catmull_clark.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

@@ -1,4 +1,4 @@
-// OBJ for cell complexes (io/cell_obj.h, io/cell_io.h): points, polylines and quads, round trips, errors
+// OBJ for cell complexes (dlfl/cells/cell_obj.h, dlfl/cells/cell_io.h): points, polylines and quads, round trips, errors
 // with their lines, and which files the tool must read as cell complexes.
 
 #include <doctest/doctest.h>
@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "cell_file_helpers.h"
-#include "dlfl/errors.h"
-#include "io/cell_io.h"
-#include "io/cell_obj.h"
+#include <dlfl/errors.h>
+#include <dlfl/cells/cell_io.h>
+#include <dlfl/cells/cell_obj.h>
 
 using namespace dlfl;
 

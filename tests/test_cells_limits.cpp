@@ -7,11 +7,11 @@
 #include <filesystem>
 #include <string>
 
-#include "cells/cell_complex.h"
-#include "cells/convert.h"
-#include "cells/mlca.h"
-#include "dlfl/errors.h"
-#include "io/cell_io.h"
+#include <dlfl/cells/cell_complex.h>
+#include <dlfl/cells/convert.h>
+#include <dlfl/cells/mlca_subdivide.h>
+#include <dlfl/errors.h>
+#include <dlfl/cells/cell_io.h>
 
 using namespace dlfl;
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "dlfl/errors.h"
-#include "schemes/doo_sabin.h"
+#include <dlfl/errors.h>
+#include <dlfl/schemes/doo_sabin.h>
 #include "triangle_meshes.h"
 
 using namespace dlfl;

@@ -3,8 +3,8 @@
 
 #include <doctest/doctest.h>
 
-#include "dlfl/errors.h"
-#include "schemes/dual.h"
+#include <dlfl/errors.h>
+#include <dlfl/schemes/dual.h>
 #include "triangle_meshes.h"
 
 using namespace dlfl;

@@ -9,9 +9,9 @@
 #include <algorithm>
 #include <map>
 
-#include "dlfl/errors.h"
-#include "schemes/dual_honeycomb_dual.h"
-#include "schemes/sqrt3.h"
+#include <dlfl/errors.h>
+#include <dlfl/schemes/dual_honeycomb_dual.h>
+#include <dlfl/schemes/sqrt3.h>
 #include "triangle_meshes.h"
 
 using namespace dlfl;
@@ -52,7 +52,7 @@ VertexId vertex_at(const Mesh& m, const glm::dvec3& p) {
 
 TEST_CASE("dual-honeycomb-dual: counts, valences and genus on meshes of several genera and face mixes") {
   // V' = V + F, E' = 3E, F' = 2E triangles; the vertex of input vertex v keeps its valence, the vertex of
-  // input face f has 2 size(f) (schemes/dual_honeycomb_dual.h derives these).
+  // input face f has 2 size(f) (dlfl/schemes/dual_honeycomb_dual.h derives these).
   // The default tension needs vertices of valence 3 or more (see the errors below); a constant tension and
   // another t work everywhere and give the same counts and old-vertex positions.
   HoneycombParams other;

@@ -5,9 +5,9 @@
 #include <cmath>
 #include <vector>
 
-#include "dlfl/create_face_manifold.h"
-#include "dlfl/errors.h"
-#include "dlfl/validate.h"
+#include <dlfl/create_face_manifold.h>
+#include <dlfl/errors.h>
+#include <dlfl/validate.h>
 
 using namespace dlfl;
 

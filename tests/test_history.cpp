@@ -7,12 +7,12 @@
 #include <fstream>
 #include <random>
 
-#include "dlfl/mesh_hash.h"
-#include "dlfl/validate.h"
-#include "history/editor.h"
-#include "io/json_mesh.h"
-#include "io/mesh_io.h"
-#include "io/oplog.h"
+#include <dlfl/mesh_hash.h>
+#include <dlfl/validate.h>
+#include <dlfl/history/editor.h>
+#include <dlfl/io/json_mesh.h>
+#include <dlfl/io/mesh_io.h>
+#include <dlfl/history/oplog.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

@@ -14,12 +14,12 @@
 #include <tuple>
 #include <vector>
 
-#include "dlfl/create_face_manifold.h"
-#include "dlfl/errors.h"
-#include "dlfl/statistics.h"
-#include "dlfl/validate.h"
+#include <dlfl/create_face_manifold.h>
+#include <dlfl/errors.h>
+#include <dlfl/statistics.h>
+#include <dlfl/validate.h>
 #include "scheme_meshes.h"
-#include "schemes/honeycomb.h"
+#include <dlfl/schemes/honeycomb.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

@@ -17,12 +17,12 @@
 #include <type_traits>
 #include <vector>
 
-#include "dlfl/build_mesh.h"
-#include "dlfl/create_face_manifold.h"
-#include "dlfl/errors.h"
-#include "dlfl/mesh.h"
-#include "io/atomic_file.h"
-#include "io/mesh_io.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/create_face_manifold.h>
+#include <dlfl/errors.h>
+#include <dlfl/mesh.h>
+#include <dlfl/io/atomic_file.h>
+#include <dlfl/io/mesh_io.h>
 
 namespace fs = std::filesystem;
 using namespace dlfl;

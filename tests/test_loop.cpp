@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "dlfl/errors.h"
-#include "schemes/loop.h"
+#include <dlfl/errors.h>
+#include <dlfl/schemes/loop.h>
 #include "triangle_meshes.h"
 
 using namespace dlfl;

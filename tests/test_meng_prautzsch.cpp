@@ -15,16 +15,16 @@
 #include <vector>
 
 #include "convex_meshes.h"
-#include "dlfl/build_mesh.h"
-#include "dlfl/errors.h"
-#include "dlfl/validate.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/errors.h>
+#include <dlfl/validate.h>
 #include "scheme_meshes.h"
-#include "schemes/convex_polyhedron.h"
-#include "schemes/mhp.h"
-#include "schemes/mp_honeycomb.h"
-#include "schemes/mp_pushing.h"
-#include "schemes/polyhedron_angles.h"
-#include "schemes/registry.h"
+#include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/schemes/meng_prautzsch_mixed.h>
+#include <dlfl/schemes/meng_prautzsch_honeycomb.h>
+#include <dlfl/schemes/meng_prautzsch_pushing.h>
+#include <dlfl/analysis/polyhedron_angles.h>
+#include <dlfl/schemes/registry.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

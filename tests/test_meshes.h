@@ -5,8 +5,8 @@
 #include <numbers>
 #include <vector>
 
-#include "dlfl/build_mesh.h"
-#include "dlfl/polygon_soup.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/polygon_soup.h>
 
 namespace dlfl::test {
 

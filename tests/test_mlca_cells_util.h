@@ -11,8 +11,8 @@
 #include <random>
 #include <vector>
 
-#include "cells/cell_complex.h"
-#include "cells/mlca.h"
+#include <dlfl/cells/cell_complex.h>
+#include <dlfl/cells/mlca_subdivide.h>
 
 namespace dlfl::test {
 

@@ -1,4 +1,4 @@
-// MLCA on DLFL quad surfaces (schemes/mlca.h): equality with Catmull-Clark on 4-valent quad meshes, the
+// MLCA on DLFL quad surfaces (dlfl/schemes/mlca_polygons.h): equality with Catmull-Clark on 4-valent quad meshes, the
 // composite weights of formula (2) re-derived from the combinatorics, counts, the split to quads, open
 // boundaries as crease curves, point spheres, affine invariance.
 
@@ -12,12 +12,12 @@
 #include <utility>
 #include <vector>
 
-#include "dlfl/build_mesh.h"
-#include "dlfl/validate.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/validate.h>
 #include "scheme_meshes.h"
-#include "schemes/catmull_clark.h"
-#include "schemes/mlca.h"
-#include "schemes/registry.h"
+#include <dlfl/schemes/catmull_clark.h>
+#include <dlfl/schemes/mlca_polygons.h>
+#include <dlfl/schemes/registry.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

@@ -6,10 +6,10 @@
 
 #include <string>
 
-#include "dlfl/errors.h"
-#include "schemes/mhp.h"
-#include "schemes/mp_honeycomb.h"
-#include "schemes/mp_pushing.h"
+#include <dlfl/errors.h>
+#include <dlfl/schemes/meng_prautzsch_mixed.h>
+#include <dlfl/schemes/meng_prautzsch_honeycomb.h>
+#include <dlfl/schemes/meng_prautzsch_pushing.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

@@ -6,12 +6,12 @@
 
 #include <filesystem>
 
-#include "dlfl/build_mesh.h"
-#include "dlfl/statistics.h"
-#include "dlfl/validate.h"
-#include "io/mesh_io.h"
-#include "schemes/catmull_clark.h"
-#include "schemes/loop.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/statistics.h>
+#include <dlfl/validate.h>
+#include <dlfl/io/mesh_io.h>
+#include <dlfl/schemes/catmull_clark.h>
+#include <dlfl/schemes/loop.h>
 
 using namespace dlfl;
 

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <vector>
 
-#include "dlfl/create_face_manifold.h"
-#include "dlfl/errors.h"
-#include "dlfl/validate.h"
+#include <dlfl/create_face_manifold.h>
+#include <dlfl/errors.h>
+#include <dlfl/validate.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

@@ -5,7 +5,7 @@
 #include <random>
 #include <vector>
 
-#include "dlfl/validate.h"
+#include <dlfl/validate.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

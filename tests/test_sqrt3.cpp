@@ -9,8 +9,8 @@
 #include <numbers>
 #include <set>
 
-#include "dlfl/errors.h"
-#include "schemes/sqrt3.h"
+#include <dlfl/errors.h>
+#include <dlfl/schemes/sqrt3.h>
 #include "triangle_meshes.h"
 
 using namespace dlfl;

@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "schemes/registry.h"
+#include <dlfl/schemes/registry.h>
 #include "tool_runner.h"
 
 using namespace dlfl::test;

@@ -4,7 +4,7 @@
 
 #include <algorithm>
 
-#include "dlfl/validate.h"
+#include <dlfl/validate.h>
 #include "test_meshes.h"
 
 namespace dlfl {

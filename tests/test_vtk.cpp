@@ -1,4 +1,4 @@
-// VTK legacy unstructured grids (io/vtk.h): the vertex-order mapping on a hand-made unit cube, ASCII and
+// VTK legacy unstructured grids (dlfl/cells/vtk.h): the vertex-order mapping on a hand-made unit cube, ASCII and
 // binary round trips with bit-identical positions, version 5 files, and every bad-input error with its line.
 
 #include <doctest/doctest.h>
@@ -12,9 +12,9 @@
 #include <vector>
 
 #include "cell_file_helpers.h"
-#include "dlfl/errors.h"
-#include "io/cell_io.h"
-#include "io/vtk.h"
+#include <dlfl/errors.h>
+#include <dlfl/cells/cell_io.h>
+#include <dlfl/cells/vtk.h>
 
 using namespace dlfl;
 

@@ -11,17 +11,17 @@
 #include <numbers>
 #include <vector>
 
-#include "dlfl/create_face_manifold.h"
-#include "dlfl/errors.h"
-#include "dlfl/mesh_hash.h"
-#include "dlfl/statistics.h"
-#include "dlfl/validate.h"
-#include "history/editor.h"
-#include "io/json_mesh.h"
-#include "io/oplog.h"
+#include <dlfl/create_face_manifold.h>
+#include <dlfl/errors.h>
+#include <dlfl/mesh_hash.h>
+#include <dlfl/statistics.h>
+#include <dlfl/validate.h>
+#include <dlfl/history/editor.h>
+#include <dlfl/io/json_mesh.h>
+#include <dlfl/history/oplog.h>
 #include "scheme_meshes.h"
-#include "schemes/registry.h"
-#include "schemes/zhang_wang_honeycomb.h"
+#include <dlfl/schemes/registry.h>
+#include <dlfl/schemes/zhang_wang_honeycomb.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

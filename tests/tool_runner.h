@@ -47,7 +47,7 @@ inline Run run(const std::string& args) {
 }
 
 inline std::string example(const char* name) {
-  return std::string("'") + DLFL_SOURCE_DIR + "/examples/" + name + "'";
+  return std::string("'") + DLFL_SOURCE_DIR + "/data/" + name + "'";
 }
 
 inline std::filesystem::path scratch(const char* name) {

@@ -12,14 +12,14 @@
 #include <numbers>
 #include <vector>
 
-#include "dlfl/build_mesh.h"
-#include "dlfl/mesh.h"
-#include "dlfl/polygon_soup.h"
-#include "dlfl/validate.h"
-#include "history/editor.h"
-#include "io/oplog.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/mesh.h>
+#include <dlfl/polygon_soup.h>
+#include <dlfl/validate.h>
+#include <dlfl/history/editor.h>
+#include <dlfl/history/oplog.h>
 #include "scheme_meshes.h"
-#include "schemes/registry.h"
+#include <dlfl/schemes/registry.h>
 #include "test_meshes.h"
 
 namespace dlfl::test {

@@ -3,8 +3,8 @@
 #include <iostream>
 
 #include "commands.h"
-#include "dlfl/validate.h"
-#include "io/mesh_io.h"
+#include <dlfl/validate.h>
+#include <dlfl/io/mesh_io.h>
 
 namespace dlfl::tool {
 

@@ -2,8 +2,8 @@
 // .vtk and .obj.
 
 #include "commands.h"
-#include "io/cell_io.h"
-#include "io/mesh_io.h"
+#include <dlfl/cells/cell_io.h>
+#include <dlfl/io/mesh_io.h>
 
 namespace dlfl::tool {
 

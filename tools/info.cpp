@@ -5,14 +5,14 @@
 #include <nlohmann/json.hpp>
 
 #include "commands.h"
-#include "dlfl/errors.h"
-#include "dlfl/mesh_hash.h"
-#include "dlfl/statistics.h"
-#include "dlfl/validate.h"
-#include "io/cell_io.h"
-#include "io/mesh_io.h"
-#include "schemes/convex_polyhedron.h"
-#include "schemes/polyhedron_angles.h"
+#include <dlfl/errors.h>
+#include <dlfl/mesh_hash.h>
+#include <dlfl/statistics.h>
+#include <dlfl/validate.h>
+#include <dlfl/cells/cell_io.h>
+#include <dlfl/io/mesh_io.h>
+#include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/analysis/polyhedron_angles.h>
 
 namespace dlfl::tool {
 

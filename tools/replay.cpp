@@ -3,8 +3,8 @@
 #include <string>
 
 #include "commands.h"
-#include "io/mesh_io.h"
-#include "io/oplog.h"
+#include <dlfl/io/mesh_io.h>
+#include <dlfl/history/oplog.h>
 
 namespace dlfl::tool {
 

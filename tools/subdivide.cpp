@@ -4,13 +4,13 @@
 #include <string>
 #include <vector>
 
-#include "cells/mlca.h"
+#include <dlfl/cells/mlca_subdivide.h>
 #include "commands.h"
-#include "dlfl/errors.h"
-#include "history/editor.h"
-#include "io/cell_io.h"
-#include "io/mesh_io.h"
-#include "io/oplog.h"
+#include <dlfl/errors.h>
+#include <dlfl/history/editor.h>
+#include <dlfl/cells/cell_io.h>
+#include <dlfl/io/mesh_io.h>
+#include <dlfl/history/oplog.h>
 
 namespace dlfl::tool {
 

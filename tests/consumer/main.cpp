@@ -1,7 +1,7 @@
 // Builds a face manifold with the installed library and checks it; exit 0 on success.
 #include <dlfl/create_face_manifold.h>
 #include <dlfl/validate.h>
-#include <io/mesh_io.h>
+#include <dlfl/io/mesh_io.h>
 
 #include <cstdio>
 #include <vector>

@@ -12,8 +12,8 @@
 #include <map>
 #include <vector>
 
-#include "dlfl/build_mesh.h"
-#include "dlfl/mesh.h"
+#include <dlfl/build_mesh.h>
+#include <dlfl/mesh.h>
 
 namespace dlfl::oracle {
 

@@ -11,10 +11,10 @@
 #include "../test_meshes.h"
 #include "../triangle_meshes.h"
 #include "cgal_compare.h"
-#include "schemes/catmull_clark.h"
-#include "schemes/doo_sabin.h"
-#include "schemes/loop.h"
-#include "schemes/sqrt3.h"
+#include <dlfl/schemes/catmull_clark.h>
+#include <dlfl/schemes/doo_sabin.h>
+#include <dlfl/schemes/loop.h>
+#include <dlfl/schemes/sqrt3.h>
 
 using namespace dlfl;
 using namespace dlfl::oracle;

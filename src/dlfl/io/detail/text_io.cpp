@@ -1,0 +1,71 @@
+#include <dlfl/io/detail/text_io.h>
+
+#include <cctype>
+#include <cerrno>
+#include <fstream>
+#include <istream>
+#include <ostream>
+#include <system_error>
+
+namespace dlfl::io_detail {
+
+std::string read_file(const std::filesystem::path& path) {
+  const std::string name = path.string();
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) throw IoError("cannot open: it is a directory", name);
+  std::ifstream in(path, std::ios::in | std::ios::binary);
+  if (!in) throw IoError("cannot open: " + std::generic_category().message(errno), name);
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  return read_all(in, name, ec ? 0 : static_cast<std::size_t>(size));
+}
+
+std::string lower_extension(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
+
+std::string read_all(std::istream& in, const std::string& name, std::size_t size_hint) {
+  if (size_hint == 0) {
+    // A seekable stream (a file, a string stream) tells how much is left, so that one read suffices.
+    std::streambuf* buffer = in.rdbuf();
+    const auto here = buffer ? buffer->pubseekoff(0, std::ios::cur, std::ios::in) : std::streampos(-1);
+    if (here != std::streampos(-1)) {
+      const auto end = buffer->pubseekoff(0, std::ios::end, std::ios::in);
+      buffer->pubseekpos(here, std::ios::in);
+      if (end != std::streampos(-1) && end > here) size_hint = static_cast<std::size_t>(end - here);
+    }
+  }
+  std::string data;
+  std::size_t size = 0;
+  // One byte more than the hint so that a file of exactly that size hits the end in the first read.
+  std::size_t chunk = std::max<std::size_t>(size_hint + 1, std::size_t{1} << 16);
+  while (in) {
+    data.resize(size + chunk);
+    in.read(data.data() + size, static_cast<std::streamsize>(chunk));
+    size += static_cast<std::size_t>(in.gcount());
+    chunk = std::max(chunk, size);  // grow geometrically when the size is not known
+  }
+  if (in.bad() || !in.eof()) throw IoError("read error", name);
+  data.resize(size);
+  return data;
+}
+
+void BlockWriter::text(std::string_view s) {
+  if (s.size() > capacity - size_) {
+    flush();
+    if (s.size() > capacity) {
+      out_.write(s.data(), static_cast<std::streamsize>(s.size()));
+      return;
+    }
+  }
+  std::memcpy(buffer_.get() + size_, s.data(), s.size());
+  size_ += s.size();
+}
+
+void BlockWriter::flush() {
+  if (size_ != 0) out_.write(buffer_.get(), static_cast<std::streamsize>(size_));
+  size_ = 0;
+}
+
+}  // namespace dlfl::io_detail

@@ -1,0 +1,91 @@
+#include <dlfl/io/mesh_io.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <fstream>
+#include <system_error>
+
+#include <dlfl/build_mesh.h>
+#include <dlfl/errors.h>
+#include <dlfl/io/atomic_file.h>
+#include <dlfl/io/detail/text_io.h>
+#include <dlfl/io/json_mesh.h>
+
+namespace dlfl {
+
+MeshFormat format_for_path(const std::filesystem::path& path) {
+  const std::string ext = io_detail::lower_extension(path);
+  if (ext == ".obj") return MeshFormat::obj;
+  if (ext == ".off") return MeshFormat::off;
+  if (ext == ".ply") return MeshFormat::ply;
+  if (ext == ".json") return MeshFormat::json;
+  if (ext.empty()) throw IoError("no file extension; expected .obj, .off, .ply or .json", path.string());
+  throw IoError(
+      "unknown mesh file extension '" + path.extension().string() + "'; expected .obj, .off, .ply or .json",
+      path.string());
+}
+
+Mesh build_mesh(const ParsedPolygons& parsed, const std::string& name) {
+  try {
+    return dlfl::build_mesh(parsed.soup);
+  } catch (const PolygonError& e) {
+    const auto& lines = e.element() == PolygonError::Element::face ? parsed.face_lines : parsed.vertex_lines;
+    throw IoError(e.what(), name, e.index() < lines.size() ? lines[e.index()] : 0);
+  } catch (const InvalidArgument& e) {
+    // Only a soup too large for 32-bit handles gets here, as the parsers check everything else.
+    throw IoError(e.what(), name);
+  }
+}
+
+Mesh read_mesh(const std::filesystem::path& path) {
+  const MeshFormat format = format_for_path(path);
+  const std::string name = path.string();
+  const std::string text = io_detail::read_file(path);
+  switch (format) {
+    case MeshFormat::obj:
+      return build_mesh(io_detail::parse_obj_text(text, name), name);
+    case MeshFormat::off:
+      return build_mesh(io_detail::parse_off_text(text, name), name);
+    case MeshFormat::ply:
+      break;
+    case MeshFormat::json: {
+      nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+      if (doc.is_discarded()) throw IoError("not valid JSON", name);
+      return mesh_from_json(doc, name);
+    }
+  }
+  return build_mesh(io_detail::parse_ply_text(text, name), name);
+}
+
+void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {
+  const MeshFormat format = format_for_path(path);
+  if (format == MeshFormat::json) {
+    const std::string text = mesh_to_json(mesh).dump();
+    write_atomically(path, [&](std::ostream& out) { out << text << '\n'; });
+    return;
+  }
+  // Converting first means a mesh that an indexed polygon file cannot hold fails before any file is touched.
+  const PolygonSoup soup = to_polygons(mesh);
+  const bool binary = format == MeshFormat::ply && options.binary_ply;
+  write_atomically(
+      path,
+      [&](std::ostream& out) {
+        switch (format) {
+          case MeshFormat::obj:
+            write_obj(out, soup);
+            break;
+          case MeshFormat::off:
+            write_off(out, soup);
+            break;
+          case MeshFormat::ply:
+            write_ply(out, soup, binary);
+            break;
+          case MeshFormat::json:
+            break;  // handled above
+        }
+      },
+      binary);
+}
+
+}  // namespace dlfl

@@ -1,0 +1,73 @@
+// Wavefront OBJ: `v` and `f` statements; everything else is skipped.
+
+#include <istream>
+
+#include <dlfl/io/detail/text_io.h>
+#include <dlfl/io/mesh_io.h>
+
+namespace dlfl {
+
+namespace io_detail {
+
+ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
+  ParsedPolygons parsed;
+  PolygonSoup& soup = parsed.soup;
+  LineScanner s(text, name, true);
+  while (s.next_line()) {
+    const std::string_view keyword = s.token();
+    if (keyword == "v") {
+      // A 4th value (w) or vertex colours may follow x y z; they are ignored.
+      soup.positions.push_back(s.point());
+      parsed.vertex_lines.push_back(s.line());
+    } else if (keyword == "f") {
+      // Negative indices count back from the vertices read so far; positive ones are checked after the whole
+      // file, so that a face may name a vertex defined further down.
+      const auto defined = static_cast<std::int64_t>(soup.positions.size());
+      std::size_t count = 0;
+      while (!s.at_eol()) {
+        soup.indices.push_back(obj_vertex_index(s, defined));
+        ++count;
+      }
+      if (count < 3) s.fail("face has " + std::to_string(count) + " vertices; at least 3 are needed");
+      if (soup.indices.size() > max_indices) s.fail("too many face vertices");
+      soup.offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
+      parsed.face_lines.push_back(s.line());
+    }
+  }
+  const std::size_t nv = soup.positions.size();
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    for (std::uint32_t i : soup.face(f)) {
+      if (i >= nv) {
+        throw IoError("vertex index " + std::to_string(std::uint64_t{i} + 1) +
+                          " is out of range (there are " + std::to_string(nv) + " vertices)",
+                      name, parsed.face_lines[f]);
+      }
+    }
+  }
+  return parsed;
+}
+
+}  // namespace io_detail
+
+ParsedPolygons parse_obj(std::istream& in, const std::string& name) {
+  return io_detail::parse_obj_text(io_detail::read_all(in, name), name);
+}
+
+void write_obj(std::ostream& out, const PolygonSoup& soup) {
+  io_detail::BlockWriter w(out);
+  for (const glm::dvec3& p : soup.positions) {
+    w.text("v ");
+    w.point_line(p);
+  }
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    w.put('f');
+    for (std::uint32_t i : soup.face(f)) {
+      w.put(' ');
+      w.number(std::uint64_t{i} + 1);
+    }
+    w.put('\n');
+  }
+  w.flush();
+}
+
+}  // namespace dlfl

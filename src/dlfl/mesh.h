@@ -1,0 +1,531 @@
+#pragma once
+// The Doubly Linked Face List (DLFL): a closed, orientable 2-manifold mesh stored as faces that are circular
+// doubly linked lists of corners. See docs/kernel.md for the model, the handle rules and the operator
+// conventions.
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <vector>
+
+#include <dlfl/handles.h>
+#include <dlfl/detail/large_allocator.h>
+
+namespace dlfl {
+
+/// Handles of removed elements that an operator brings back instead of appending new ones, plus "anchors" (a
+/// face's first corner, a vertex's representative corner) to set when it finishes. This is how the inverse of
+/// an operator restores a mesh with the very same handles; every operator returns a `Step` whose `reuse` is
+/// filled in that way. Unset (invalid) fields mean "append new elements" and "no anchor to set".
+struct Reuse {
+  /// Corners to bring back, in the order the operator documents.
+  std::array<CornerId, 2> corners{};
+  EdgeId edge{};
+  FaceId face{};
+  VertexId vertex{};
+  /// After the operator: `first_corner(face_anchors[i].face) = face_anchors[i].corner`.
+  struct FaceAnchor {
+    FaceId face{};
+    CornerId corner{};
+  };
+  /// After the operator: `corner(vertex_anchors[i].vertex) = vertex_anchors[i].corner`.
+  struct VertexAnchor {
+    VertexId vertex{};
+    CornerId corner{};
+  };
+  std::array<FaceAnchor, 2> face_anchors{};
+  std::array<VertexAnchor, 2> vertex_anchors{};
+};
+
+/// One Euler operator with its arguments, as a value. `Mesh::apply` runs it and returns the exact inverse.
+struct Step {
+  enum class Kind : std::uint8_t {
+    create_vertex,     ///< uses position
+    delete_vertex,     ///< uses vertex
+    insert_edge,       ///< uses corner1, corner2
+    delete_edge,       ///< uses edge
+    subdivide_edge,    ///< uses edge, position
+    unsubdivide_edge,  ///< uses vertex
+    set_position,      ///< uses vertex, position
+    set_face_point,    ///< uses face, position (a NaN x clears the point)
+  };
+  Kind kind = Kind::create_vertex;
+  VertexId vertex{};
+  EdgeId edge{};
+  FaceId face{};
+  CornerId corner1{};
+  CornerId corner2{};
+  glm::dvec3 position{0.0};
+  Reuse reuse{};
+};
+
+/// What `insert_edge` did. `split()` tells which of the two cases happened.
+struct InsertEdgeResult {
+  EdgeId edge;          ///< the new edge; its side 0 starts at vertex(c1), its side 1 at vertex(c2)
+  FaceId created_face;  ///< split: the new face (the smaller part); invalid on a merge
+  FaceId removed_face;  ///< merge: the face that was absorbed (now removed); invalid on a split
+  Step inverse;         ///< applying this restores the mesh exactly
+  bool split() const { return created_face.valid(); }
+};
+
+/// What `delete_edge` did.
+struct DeleteEdgeResult {
+  FaceId created_face;  ///< the edge had the same face on both sides: the new face (the smaller part)
+  FaceId removed_face;  ///< the edge separated two faces: the one that was absorbed
+  Step inverse;         ///< applying this restores the mesh exactly
+};
+
+/// A closed orientable 2-manifold in DLFL form.
+///
+/// Storage is contiguous arrays addressed by 32-bit handles. Removing an element leaves a tombstone: handles
+/// of live elements never change and are never reused until `compact()`. New elements are appended in a fixed
+/// order, so the same operations always give the same handles.
+///
+/// Element accessors (`vertex(c)`, `next(c)`, ...) do not check their argument: it must be a live handle (see
+/// `is_alive`). Every operator checks its preconditions and throws `InvalidArgument` or `TopologyError`,
+/// leaving the mesh unchanged.
+class Mesh {
+ public:
+  Mesh() = default;
+
+  // ---- sizes
+  // -------------------------------------------------------------------------------------------------
+
+  std::size_t num_vertices() const { return live_vertices_; }
+  std::size_t num_edges() const { return live_edges_; }
+  std::size_t num_faces() const { return live_faces_; }
+  std::size_t num_corners() const { return live_corners_; }
+  bool empty() const { return live_vertices_ == 0; }
+
+  /// One past the largest handle index ever assigned (live or removed), per element type.
+  std::uint32_t vertex_capacity() const { return static_cast<std::uint32_t>(vertex_corner_.size()); }
+  std::uint32_t edge_capacity() const { return static_cast<std::uint32_t>(edges_.size()); }
+  std::uint32_t face_capacity() const { return static_cast<std::uint32_t>(faces_.size()); }
+  std::uint32_t corner_capacity() const { return static_cast<std::uint32_t>(corners_.size()); }
+
+  /// Reserve room for this many elements of each type in total (live plus removed), to avoid regrowth.
+  void reserve(std::size_t vertices, std::size_t edges, std::size_t faces, std::size_t corners);
+
+  // ---- liveness
+  // ----------------------------------------------------------------------------------------------
+
+  /// True for a handle that was assigned and whose element has not been removed. Safe on any handle.
+  bool is_alive(VertexId v) const {
+    return v.index() < vertex_capacity() && vertex_corner_[v.index()].valid();
+  }
+  bool is_alive(EdgeId e) const { return e.index() < edge_capacity() && edges_[e.index()].corner[0].valid(); }
+  bool is_alive(FaceId f) const { return f.index() < face_capacity() && faces_[f.index()].alive; }
+  bool is_alive(CornerId c) const {
+    return c.index() < corner_capacity() && corners_[c.index()].vertex.valid();
+  }
+
+  // ---- element data
+  // ------------------------------------------------------------------------------------------
+
+  const glm::dvec3& position(VertexId v) const { return positions_[v.index()]; }
+  /// A representative corner of the vertex (its only corner for a point sphere). Rotation starts here.
+  CornerId corner(VertexId v) const { return vertex_corner_[v.index()]; }
+
+  VertexId vertex(CornerId c) const { return corners_[c.index()].vertex; }
+  FaceId face(CornerId c) const { return corners_[c.index()].face; }
+  /// The next corner along the face (counter-clockwise seen from outside).
+  CornerId next(CornerId c) const { return corners_[c.index()].next; }
+  CornerId prev(CornerId c) const { return corners_[c.index()].prev; }
+  /// The edge that leaves the corner along its face, from vertex(c) to vertex(next(c)). Invalid for the
+  /// corner of a point sphere.
+  EdgeId edge(CornerId c) const { return corners_[c.index()].edge; }
+
+  /// The corner of edge `e` on side 0 or 1: the corner where the edge starts on that side. Side 0 runs from
+  /// vertex A to vertex B, side 1 from B to A.
+  CornerId corner(EdgeId e, int side) const { return edges_[e.index()].corner[side]; }
+
+  /// The face's first corner: iteration around the face starts here.
+  CornerId first_corner(FaceId f) const { return faces_[f.index()].corner; }
+  /// Number of corners of the face (1 for a point sphere, 2 for a 2-gon).
+  std::uint32_t size(FaceId f) const { return faces_[f.index()].size; }
+  /// Hole faces stand for the boundary loops of an open mesh; writers omit them.
+  bool is_hole(FaceId f) const { return faces_[f.index()].hole; }
+  /// The face's control point (the central control vertex of Zhang-Wang honeycomb subdivision), if one was
+  /// set. Faces made by operators and by most schemes have none; `face_point_or_centroid` then gives the
+  /// centroid.
+  std::optional<glm::dvec3> face_point(FaceId f) const {
+    if (face_points_.empty() || std::isnan(face_points_[f.index()].x)) return std::nullopt;
+    return face_points_[f.index()];
+  }
+  /// The control point if set, else the centroid of the face's vertices.
+  glm::dvec3 face_point_or_centroid(FaceId f) const;
+  /// True if any face, live or removed, carries a control point.
+  bool has_face_points() const { return !face_points_.empty(); }
+
+  // ---- navigation, O(1) per step
+  // ----------------------------------------------------------------------------
+
+  /// The corner on the other side of edge(c): it starts at vertex(next(c)) and ends at vertex(c).
+  CornerId opposite(CornerId c) const {
+    const auto& e = edges_[edge(c).index()];
+    return e.corner[0] == c ? e.corner[1] : e.corner[0];
+  }
+  /// The next corner around vertex(c), turning clockwise seen from outside (towards the face across edge(c)).
+  CornerId next_around_vertex(CornerId c) const { return edge(c).valid() ? next(opposite(c)) : c; }
+  /// The previous corner around vertex(c), turning counter-clockwise (towards the face across edge(prev(c))).
+  CornerId prev_around_vertex(CornerId c) const { return edge(c).valid() ? opposite(prev(c)) : c; }
+
+  /// The two end vertices of an edge: `from(e)` = vertex(corner(e,0)), `to(e)` = vertex(corner(e,1)).
+  VertexId from(EdgeId e) const { return vertex(corner(e, 0)); }
+  VertexId to(EdgeId e) const { return vertex(corner(e, 1)); }
+  /// The faces on side 0 and side 1 of an edge (equal when the edge has the same face on both sides).
+  FaceId face(EdgeId e, int side) const { return face(corner(e, side)); }
+
+  /// Number of edges at the vertex, counting an edge twice if both its ends are here (never, as self-loops
+  /// are not allowed). 0 for a point sphere. O(valence).
+  std::uint32_t valence(VertexId v) const;
+  /// A vertex with no edge: its only face has one corner.
+  bool is_point_sphere(VertexId v) const { return !edge(corner(v)).valid(); }
+
+  // ---- iteration
+  // ---------------------------------------------------------------------------------------------
+
+  template <class H>
+  class LiveRange;
+  class FaceCorners;
+  class VertexCorners;
+
+  /// Live handles in increasing order.
+  LiveRange<VertexId> vertices() const;
+  LiveRange<EdgeId> edges() const;
+  LiveRange<FaceId> faces() const;
+  LiveRange<CornerId> corners() const;
+  /// The corners of a face, from its first corner along `next`.
+  FaceCorners corners(FaceId f) const;
+  /// The corners at a vertex, from its representative corner along `next_around_vertex`.
+  VertexCorners corners(VertexId v) const;
+
+  // ---- Euler operators
+  // ---------------------------------------------------------------------------------------
+
+  /// CREATEVERTEX (MVFS): a new point sphere, one vertex with one face of one corner and no edge. The vertex,
+  /// face and corner are appended (or brought back from `reuse.vertex`, `reuse.face`, `reuse.corners[0]`).
+  /// Throws InvalidArgument on a non-finite position.
+  VertexId create_vertex(const glm::dvec3& position, const Reuse& reuse = {});
+
+  /// Inverse of `create_vertex`: removes a point sphere (vertex, face, corner). Throws TopologyError if the
+  /// vertex has edges.
+  void delete_vertex(VertexId v, const Reuse& reuse = {});
+
+  /// INSERTEDGE: a new edge from vertex(c1) to vertex(c2), drawn inside the angle of corner c1 and the angle
+  /// of corner c2.
+  ///
+  /// - Same face: the face is split in two. The part that contains c1 is c1, next(c1), ..., up to the corner
+  ///   before c2, plus a new corner at vertex(c2); the other part contains c2.
+  /// - Different faces (a point sphere counts as a face): the two faces become one, and the topology changes
+  ///   (two components join, or the genus grows by one).
+  ///
+  /// Conventions that schemes rely on:
+  /// - c1 and c2 stay at their vertices with their outgoing edges. The new edge leaves vertex(c1) from a new
+  ///   corner n1 = corner(e,0), placed just before c2 along the face; and vertex(c2) from a new corner
+  ///   n2 = corner(e,1), placed just before c1. A point sphere's corner is not duplicated: if c1 (c2) is the
+  ///   corner of a point sphere, n1 = c1 (n2 = c2).
+  /// - Split: the larger part keeps the face handle, the smaller part gets a new face (on a tie the part of
+  /// c1
+  ///   keeps it). The new face copies the hole flag. Merge: the larger face survives (on a tie the face of
+  ///   c1) and the other is removed. A face's first corner stays unless it moved to the other part; then it
+  ///   becomes c1 or c2, whichever lies in the face.
+  /// - New handles are appended in the order n1, n2, edge, face (or taken from `reuse.corners`, `reuse.edge`,
+  ///   `reuse.face`).
+  ///
+  /// Cost O(1) plus the size of the smaller face involved. Throws InvalidArgument for a removed corner, and
+  /// TopologyError if both corners are at the same vertex (a self-loop).
+  InsertEdgeResult insert_edge(CornerId c1, CornerId c2, const Reuse& reuse = {});
+
+  /// DELETEEDGE, the inverse of `insert_edge`. If the edge has different faces on its two sides they merge
+  /// into one (the larger survives; on a tie face(corner(e,1))). If it has the same face on both sides that
+  /// face splits in two (the larger part keeps the handle; on a tie the part continuing at from(e)), which
+  /// may separate a component or lower the genus; an end vertex left with no edge becomes a point sphere,
+  /// keeping its corner. Cost O(1) plus the size of the smaller face involved.
+  DeleteEdgeResult delete_edge(EdgeId e, const Reuse& reuse = {});
+
+  /// Puts a new vertex at `position` on edge e. Edge e keeps running from from(e) to the new vertex, a new
+  /// edge runs from the new vertex to the old to(e); both faces grow by one corner. Appends, in order: the
+  /// vertex, corner on side 0, corner on side 1, edge (or takes them from `reuse`). O(1). Returns the new
+  /// vertex.
+  VertexId subdivide_edge(EdgeId e, const glm::dvec3& position, const Reuse& reuse = {});
+
+  /// Inverse of `subdivide_edge`: removes a vertex of valence 2 and joins its two edges into one. The two
+  /// edges must continue each other the way `subdivide_edge` leaves them: one arrives at v on its side 0 (it
+  /// is kept, now running to the far end of the other), the other leaves v on its side 0 (it is removed).
+  /// Throws TopologyError otherwise, or if both neighbours are the same vertex (the result would be a
+  /// self-loop).
+  void unsubdivide_edge(VertexId v, const Reuse& reuse = {});
+
+  /// Moves a vertex. Throws InvalidArgument on a non-finite position.
+  void set_position(VertexId v, const glm::dvec3& position);
+
+  /// Runs one operator given as a value and returns its exact inverse (`apply(apply(s))` restores the mesh).
+  Step apply(const Step& step);
+
+  // ---- anchors and flags (no effect on topology)
+  // -------------------------------------------------------------
+
+  /// Makes c the corner where iteration around its face starts.
+  void set_first_corner(FaceId f, CornerId c);
+  /// Makes c the vertex's representative corner (where rotation starts).
+  void set_vertex_corner(VertexId v, CornerId c);
+  void set_hole(FaceId f, bool hole);
+  /// Sets (or, with `std::nullopt`, clears) a face's control point. Throws InvalidArgument for a removed face
+  /// or a non-finite point. A removed face keeps its point, so bringing the face back restores it.
+  void set_face_point(FaceId f, const std::optional<glm::dvec3>& point);
+
+  // ---- maintenance
+  // -------------------------------------------------------------------------------------------
+
+  /// Old-to-new handle maps returned by `compact` (invalid for removed elements).
+  struct CompactMap {
+    std::vector<VertexId> vertices;
+    std::vector<EdgeId> edges;
+    std::vector<FaceId> faces;
+    std::vector<CornerId> corners;
+  };
+  /// Drops removed elements and renumbers the live ones densely, keeping their relative order. O(size).
+  CompactMap compact();
+
+  /// Element-by-element equality: the same live handles, and for each the same data (positions bit for bit,
+  /// links, anchors, face sizes and hole flags). Removed elements are ignored.
+  friend bool operator==(const Mesh& a, const Mesh& b);
+
+ private:
+  struct CornerRecord {
+    VertexId vertex;  // invalid for a removed corner
+    FaceId face;
+    CornerId next;
+    CornerId prev;
+    EdgeId edge;
+  };
+  struct EdgeRecord {
+    std::array<CornerId, 2> corner;  // corner[0] invalid for a removed edge
+  };
+  struct FaceRecord {
+    CornerId corner;  // kept while removed, so that bringing the face back restores it
+    std::uint32_t size = 0;
+    bool alive = false;
+    bool hole = false;
+  };
+
+  friend class MeshBuilder;
+  friend struct MeshArrays;
+  friend class MeshAssembler;
+  friend struct MeshTestAccess;  // lets the test suite corrupt a mesh to prove the validator catches it
+
+  // Precondition checks: inline fast path, out-of-line throw.
+  template <class H>
+  void require(H h, const char* op) const {
+    if (!is_alive(h)) [[unlikely]]
+      missing(h, op);
+  }
+  [[noreturn]] static void missing(VertexId v, const char* op);
+  [[noreturn]] static void missing(EdgeId e, const char* op);
+  [[noreturn]] static void missing(FaceId f, const char* op);
+  [[noreturn]] static void missing(CornerId c, const char* op);
+
+  // Allocation: append, or bring back the removed element a Reuse names. Inline: they are on every operator's
+  // hot path (a honeycomb step runs millions of them).
+  CornerId new_corner(CornerId reuse) {
+    ++live_corners_;
+    if (reuse.valid()) return reuse;
+    corners_.emplace_back();
+    return CornerId(static_cast<std::uint32_t>(corners_.size() - 1));
+  }
+  EdgeId new_edge(EdgeId reuse) {
+    ++live_edges_;
+    if (reuse.valid()) return reuse;
+    edges_.emplace_back();
+    return EdgeId(static_cast<std::uint32_t>(edges_.size() - 1));
+  }
+  FaceId new_face(FaceId reuse) {
+    ++live_faces_;
+    if (reuse.valid()) {
+      faces_[reuse.index()].alive = true;
+      return reuse;
+    }
+    faces_.push_back({CornerId(), 0, true, false});
+    if (!face_points_.empty()) face_points_.emplace_back(std::nan(""), 0.0, 0.0);
+    return FaceId(static_cast<std::uint32_t>(faces_.size() - 1));
+  }
+  VertexId new_vertex(VertexId reuse) {
+    ++live_vertices_;
+    if (reuse.valid()) return reuse;
+    positions_.emplace_back(0.0);
+    vertex_corner_.emplace_back();
+    return VertexId(static_cast<std::uint32_t>(vertex_corner_.size() - 1));
+  }
+  void kill(CornerId c) {
+    corners_[c.index()].vertex = VertexId();
+    --live_corners_;
+  }
+  void kill(EdgeId e) {
+    edges_[e.index()].corner[0] = CornerId();
+    --live_edges_;
+  }
+  void kill(FaceId f) {
+    faces_[f.index()].alive = false;  // corner and hole flag stay, for a later revival
+    --live_faces_;
+  }
+  void kill(VertexId v) {
+    vertex_corner_[v.index()] = CornerId();
+    --live_vertices_;
+  }
+  void apply_anchors(const Reuse& reuse) {
+    if (reuse.face_anchors[0].face.valid() || reuse.face_anchors[1].face.valid() ||
+        reuse.vertex_anchors[0].vertex.valid() || reuse.vertex_anchors[1].vertex.valid()) [[unlikely]] {
+      set_anchors(reuse);
+    }
+  }
+  void set_anchors(const Reuse& reuse);
+  void link(CornerId a, CornerId b) {
+    corners_[a.index()].next = b;
+    corners_[b.index()].prev = a;
+  }
+  void relabel(CornerId start, FaceId f);  // face of every corner on the cycle of start
+  // Walks the cycles starting at a and at b at the same pace; returns true if the one from a is no longer.
+  bool cycle_not_longer(CornerId a, CornerId b, std::uint32_t& length_a, std::uint32_t& length_b) const;
+
+  detail::LargeVector<glm::dvec3> positions_;
+  detail::LargeVector<CornerId> vertex_corner_;  // invalid for a removed vertex
+  detail::LargeVector<CornerRecord> corners_;
+  detail::LargeVector<EdgeRecord> edges_;
+  detail::LargeVector<FaceRecord> faces_;
+  // Control points by face handle: empty until the first is set, then one slot per face (NaN x = unset).
+  detail::LargeVector<glm::dvec3> face_points_;
+  std::size_t live_vertices_ = 0;
+  std::size_t live_edges_ = 0;
+  std::size_t live_faces_ = 0;
+  std::size_t live_corners_ = 0;
+};
+
+// ---- ranges
+// --------------------------------------------------------------------------------------------------
+
+template <class H>
+class Mesh::LiveRange {
+ public:
+  class iterator {
+   public:
+    using value_type = H;
+    using difference_type = std::ptrdiff_t;
+    iterator() = default;
+    iterator(const Mesh* mesh, std::uint32_t index, std::uint32_t end)
+        : mesh_(mesh), index_(index), end_(end) {
+      skip();
+    }
+    H operator*() const { return H(index_); }
+    iterator& operator++() {
+      ++index_;
+      skip();
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator old = *this;
+      ++*this;
+      return old;
+    }
+    bool operator==(const iterator& o) const { return index_ == o.index_; }
+
+   private:
+    void skip() {
+      while (index_ < end_ && !mesh_->is_alive(H(index_))) ++index_;
+    }
+    const Mesh* mesh_ = nullptr;
+    std::uint32_t index_ = 0;
+    std::uint32_t end_ = 0;
+  };
+  LiveRange(const Mesh* mesh, std::uint32_t end) : mesh_(mesh), end_(end) {}
+  iterator begin() const { return iterator(mesh_, 0, end_); }
+  iterator end() const { return iterator(mesh_, end_, end_); }
+
+ private:
+  const Mesh* mesh_;
+  std::uint32_t end_;
+};
+
+/// Corners of a face in order; a circulator that stops after one full turn.
+class Mesh::FaceCorners {
+ public:
+  class iterator {
+   public:
+    using value_type = CornerId;
+    using difference_type = std::ptrdiff_t;
+    iterator() = default;
+    iterator(const Mesh* mesh, CornerId c, bool done) : mesh_(mesh), first_(c), c_(c), done_(done) {}
+    CornerId operator*() const { return c_; }
+    iterator& operator++() {
+      c_ = mesh_->next(c_);
+      done_ = c_ == first_;
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator old = *this;
+      ++*this;
+      return old;
+    }
+    bool operator==(const iterator& o) const { return done_ == o.done_ && (done_ || c_ == o.c_); }
+
+   private:
+    const Mesh* mesh_ = nullptr;
+    CornerId first_, c_;
+    bool done_ = true;
+  };
+  FaceCorners(const Mesh* mesh, CornerId first) : mesh_(mesh), first_(first) {}
+  iterator begin() const { return iterator(mesh_, first_, false); }
+  iterator end() const { return iterator(mesh_, first_, true); }
+
+ private:
+  const Mesh* mesh_;
+  CornerId first_;
+};
+
+/// Corners around a vertex in rotation order; stops after one full turn.
+class Mesh::VertexCorners {
+ public:
+  class iterator {
+   public:
+    using value_type = CornerId;
+    using difference_type = std::ptrdiff_t;
+    iterator() = default;
+    iterator(const Mesh* mesh, CornerId c, bool done) : mesh_(mesh), first_(c), c_(c), done_(done) {}
+    CornerId operator*() const { return c_; }
+    iterator& operator++() {
+      c_ = mesh_->next_around_vertex(c_);
+      done_ = c_ == first_;
+      return *this;
+    }
+    iterator operator++(int) {
+      iterator old = *this;
+      ++*this;
+      return old;
+    }
+    bool operator==(const iterator& o) const { return done_ == o.done_ && (done_ || c_ == o.c_); }
+
+   private:
+    const Mesh* mesh_ = nullptr;
+    CornerId first_, c_;
+    bool done_ = true;
+  };
+  VertexCorners(const Mesh* mesh, CornerId first) : mesh_(mesh), first_(first) {}
+  iterator begin() const { return iterator(mesh_, first_, false); }
+  iterator end() const { return iterator(mesh_, first_, true); }
+
+ private:
+  const Mesh* mesh_;
+  CornerId first_;
+};
+
+inline Mesh::LiveRange<VertexId> Mesh::vertices() const { return {this, vertex_capacity()}; }
+inline Mesh::LiveRange<EdgeId> Mesh::edges() const { return {this, edge_capacity()}; }
+inline Mesh::LiveRange<FaceId> Mesh::faces() const { return {this, face_capacity()}; }
+inline Mesh::LiveRange<CornerId> Mesh::corners() const { return {this, corner_capacity()}; }
+inline Mesh::FaceCorners Mesh::corners(FaceId f) const { return {this, first_corner(f)}; }
+inline Mesh::VertexCorners Mesh::corners(VertexId v) const { return {this, corner(v)}; }
+
+}  // namespace dlfl

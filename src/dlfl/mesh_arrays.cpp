@@ -1,0 +1,95 @@
+#include <dlfl/mesh_arrays.h>
+
+#include <cmath>
+
+#include <dlfl/errors.h>
+#include <dlfl/validate.h>
+
+namespace dlfl {
+
+MeshArrays MeshArrays::from(const Mesh& m) {
+  MeshArrays a;
+  a.vertices.resize(m.vertex_capacity());
+  for (std::uint32_t i = 0; i < m.vertex_capacity(); ++i)
+    a.vertices[i] = {m.positions_[i], m.vertex_corner_[i]};
+  a.corners.resize(m.corner_capacity());
+  for (std::uint32_t i = 0; i < m.corner_capacity(); ++i) {
+    const auto& c = m.corners_[i];
+    a.corners[i] = {c.vertex, c.face, c.next, c.prev, c.edge};
+  }
+  a.edges.resize(m.edge_capacity());
+  for (std::uint32_t i = 0; i < m.edge_capacity(); ++i)
+    a.edges[i] = {m.edges_[i].corner[0], m.edges_[i].corner[1]};
+  a.faces.resize(m.face_capacity());
+  for (std::uint32_t i = 0; i < m.face_capacity(); ++i) {
+    const auto& f = m.faces_[i];
+    a.faces[i] = {f.corner, f.size, f.alive, f.hole, std::nullopt};
+    if (!m.face_points_.empty() && !std::isnan(m.face_points_[i].x)) a.faces[i].point = m.face_points_[i];
+  }
+  return a;
+}
+
+Mesh MeshArrays::to_mesh() const {
+  // Range checks first: the validator relies on live elements pointing at slots that exist.
+  auto in_range = [](auto h, std::size_t n) { return !h.valid() || h.index() < n; };
+  auto fail = [](const std::string& what) { throw TopologyError("mesh arrays: " + what); };
+  const std::size_t nv = vertices.size(), nc = corners.size(), ne = edges.size(), nf = faces.size();
+  if (nv >= VertexId::invalid_index || nc >= CornerId::invalid_index || ne >= EdgeId::invalid_index ||
+      nf >= FaceId::invalid_index) {
+    fail("too many elements for 32-bit handles");
+  }
+  Mesh m;
+  m.positions_.resize(nv);
+  m.vertex_corner_.resize(nv);
+  for (std::size_t i = 0; i < nv; ++i) {
+    if (!in_range(vertices[i].corner, nc))
+      fail(to_string(VertexId(std::uint32_t(i))) + " has an out-of-range corner");
+    m.positions_[i] = vertices[i].position;
+    m.vertex_corner_[i] = vertices[i].corner;
+    m.live_vertices_ += vertices[i].corner.valid();
+  }
+  m.corners_.resize(nc);
+  for (std::size_t i = 0; i < nc; ++i) {
+    const Corner& c = corners[i];
+    if (!c.vertex.valid()) continue;
+    if (!in_range(c.vertex, nv) || !in_range(c.face, nf) || !in_range(c.next, nc) || !in_range(c.prev, nc) ||
+        !in_range(c.edge, ne) || !c.face.valid() || !c.next.valid() || !c.prev.valid()) {
+      fail(to_string(CornerId(std::uint32_t(i))) + " has a missing or out-of-range handle");
+    }
+    m.corners_[i] = {c.vertex, c.face, c.next, c.prev, c.edge};
+    ++m.live_corners_;
+  }
+  m.edges_.resize(ne);
+  for (std::size_t i = 0; i < ne; ++i) {
+    const Edge& e = edges[i];
+    if (!e.corner0.valid()) continue;
+    if (!in_range(e.corner0, nc) || !in_range(e.corner1, nc) || !e.corner1.valid()) {
+      fail(to_string(EdgeId(std::uint32_t(i))) + " has a missing or out-of-range corner");
+    }
+    m.edges_[i].corner = {e.corner0, e.corner1};
+    ++m.live_edges_;
+  }
+  m.faces_.resize(nf);
+  for (std::size_t i = 0; i < nf; ++i) {
+    const Face& f = faces[i];
+    if (!in_range(f.corner, nc) || (f.alive && !f.corner.valid())) {
+      fail(to_string(FaceId(std::uint32_t(i))) + " has a missing or out-of-range first corner");
+    }
+    m.faces_[i] = {f.corner, f.size, f.alive, f.hole};
+    m.live_faces_ += f.alive;
+    if (f.point) {
+      if (!std::isfinite(f.point->x) || !std::isfinite(f.point->y) || !std::isfinite(f.point->z))
+        fail(to_string(FaceId(std::uint32_t(i))) + " has a control point that is not finite");
+      if (m.face_points_.empty()) m.face_points_.assign(nf, glm::dvec3(std::nan(""), 0.0, 0.0));
+      m.face_points_[i] = *f.point;
+    }
+  }
+  const ValidationReport report = validate(m, 1);
+  if (!report.valid()) {
+    const Violation& v = report.violations.front();
+    fail("not a valid DLFL: " + v.element + ": " + v.message + " (" + to_string(v.code) + ")");
+  }
+  return m;
+}
+
+}  // namespace dlfl

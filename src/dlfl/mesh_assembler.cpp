@@ -1,0 +1,93 @@
+#include <dlfl/mesh_assembler.h>
+
+#include <dlfl/errors.h>
+
+namespace dlfl {
+
+MeshAssembler::MeshAssembler(std::size_t num_vertices, std::span<const std::uint32_t> offsets) {
+  if (offsets.empty() || offsets.front() != 0)
+    throw InvalidArgument("MeshAssembler: offsets must start at 0");
+  const std::size_t nf = offsets.size() - 1;
+  const std::size_t nc = offsets.back();
+  mesh_.positions_.resize(num_vertices);
+  mesh_.vertex_corner_.assign(num_vertices, CornerId());
+  mesh_.corners_.resize(nc);
+  mesh_.faces_.resize(nf);
+  twin_.resize(nc);
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const std::uint32_t begin = offsets[f], end = offsets[f + 1];
+    if (end <= begin + 1)
+      throw InvalidArgument("MeshAssembler: face " + std::to_string(f) + " has < 2 corners");
+    mesh_.faces_[f] = {CornerId(begin), end - begin, true, false};
+    for (std::uint32_t k = begin; k < end; ++k) {
+      auto& c = mesh_.corners_[k];
+      c.face = FaceId(f);
+      c.next = CornerId(k + 1 == end ? begin : k + 1);
+      c.prev = CornerId(k == begin ? end - 1 : k - 1);
+    }
+  }
+}
+
+MeshAssembler::MeshAssembler(std::size_t num_vertices, std::size_t num_faces, std::uint32_t face_size) {
+  if (face_size < 2) throw InvalidArgument("MeshAssembler: faces need at least 2 corners");
+  const std::size_t nc = num_faces * face_size;
+  mesh_.positions_.resize(num_vertices);
+  mesh_.vertex_corner_.assign(num_vertices, CornerId());
+  mesh_.corners_.resize(nc);
+  mesh_.faces_.resize(num_faces);
+  twin_.resize(nc);
+  for (std::uint32_t f = 0; f < num_faces; ++f) {
+    const std::uint32_t begin = f * face_size, end = begin + face_size;
+    mesh_.faces_[f] = {CornerId(begin), face_size, true, false};
+    for (std::uint32_t k = begin; k < end; ++k) {
+      auto& c = mesh_.corners_[k];
+      c.face = FaceId(f);
+      c.next = CornerId(k + 1 == end ? begin : k + 1);
+      c.prev = CornerId(k == begin ? end - 1 : k - 1);
+    }
+  }
+}
+
+Mesh MeshAssembler::finish() {
+  Mesh& m = mesh_;
+  const std::size_t nc = m.corners_.size();
+  m.edges_.reserve(nc / 2);
+  for (std::uint32_t k = 0; k < nc; ++k) {
+    const std::uint32_t t = twin_[k];
+    if (t >= nc || twin_[t] != k || t == k) {
+      throw InvalidArgument("MeshAssembler: the twin of corner " + std::to_string(k) + " does not pair back");
+    }
+    if (t < k) continue;  // the edge was made at its smaller corner
+    const EdgeId e(static_cast<std::uint32_t>(m.edges_.size()));
+    m.edges_.push_back({{CornerId(k), CornerId(t)}});
+    m.corners_[k].edge = e;
+    m.corners_[t].edge = e;
+  }
+  for (std::uint32_t k = 0; k < nc; ++k) {
+    auto& anchor = m.vertex_corner_[m.corners_[k].vertex.index()];
+    if (!anchor.valid()) anchor = CornerId(k);
+  }
+  for (std::size_t v = 0; v < m.vertex_corner_.size(); ++v) {
+    if (!m.vertex_corner_[v].valid()) {
+      throw InvalidArgument("MeshAssembler: vertex " + std::to_string(v) + " has no corner");
+    }
+  }
+  m.live_vertices_ = m.positions_.size();
+  m.live_edges_ = m.edges_.size();
+  m.live_faces_ = m.faces_.size();
+  m.live_corners_ = nc;
+  twin_.clear();
+  return std::move(m);
+}
+
+const Mesh& dense_mesh(const Mesh& mesh, std::optional<Mesh>& storage) {
+  if (mesh.vertex_capacity() == mesh.num_vertices() && mesh.edge_capacity() == mesh.num_edges() &&
+      mesh.face_capacity() == mesh.num_faces() && mesh.corner_capacity() == mesh.num_corners()) {
+    return mesh;
+  }
+  storage = mesh;
+  storage->compact();
+  return *storage;
+}
+
+}  // namespace dlfl

@@ -1,0 +1,57 @@
+#pragma once
+// Direct assembly of a DLFL when a scheme knows its output connectivity in closed form: for every corner, its
+// vertex and its twin (the corner across its outgoing edge). No hashing, no search: O(size) writes. This is
+// how the classic schemes (Catmull-Clark, Doo-Sabin, Loop, sqrt(3), dual) reach their speed; the honeycomb is
+// built with the Euler operators instead, as its paper prescribes.
+
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <dlfl/mesh.h>
+
+namespace dlfl {
+
+/// Assembles a closed mesh. Face f owns the corners `offset(f) .. offset(f+1)-1`, in order around the face;
+/// the caller gives each corner's vertex and twin, and each vertex's position. Handles are the indices used
+/// here: vertex i is VertexId(i), face f is FaceId(f), corner k is CornerId(k). Edges are numbered in order
+/// of their smaller corner, which is the edge's side 0.
+///
+/// The caller is trusted: `finish()` checks only that twins pair up and that every vertex has a corner
+/// (cheap); that twins run along one edge in opposite directions is left to `validate`, which the tests of
+/// every scheme run. Not for general input (use `build_mesh` for polygon soups).
+class MeshAssembler {
+ public:
+  /// Faces of any sizes: `offsets` has one entry per face plus a final one equal to the number of corners.
+  MeshAssembler(std::size_t num_vertices, std::span<const std::uint32_t> offsets);
+  /// `num_faces` faces of `face_size` corners each.
+  MeshAssembler(std::size_t num_vertices, std::size_t num_faces, std::uint32_t face_size);
+
+  std::size_t num_vertices() const { return mesh_.positions_.size(); }
+  std::size_t num_faces() const { return mesh_.faces_.size(); }
+  std::size_t num_corners() const { return mesh_.corners_.size(); }
+
+  void set_position(std::uint32_t v, const glm::dvec3& p) { mesh_.positions_[v] = p; }
+  /// Corner k sits at vertex `v`; its outgoing edge is shared with corner `twin` (which must name k back).
+  void set_corner(std::uint32_t k, std::uint32_t v, std::uint32_t twin) {
+    mesh_.corners_[k].vertex = VertexId(v);
+    twin_[k] = twin;
+  }
+  void set_hole(std::uint32_t f, bool hole) { mesh_.faces_[f].hole = hole; }
+
+  /// Links faces, creates edges and vertex anchors, and returns the mesh. Throws InvalidArgument if a twin
+  /// does not name its corner back or a vertex has no corner.
+  Mesh finish();
+
+ private:
+  Mesh mesh_;
+  detail::LargeVector<std::uint32_t> twin_;
+};
+
+/// `mesh` itself when it has no removed elements (handles are dense: 0 .. count-1), else a compacted copy
+/// held in `storage`. Schemes that number their output from input handles read their input through this.
+const Mesh& dense_mesh(const Mesh& mesh, std::optional<Mesh>& storage);
+
+}  // namespace dlfl

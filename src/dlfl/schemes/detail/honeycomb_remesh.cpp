@@ -1,0 +1,87 @@
+#include <dlfl/schemes/detail/honeycomb_remesh.h>
+
+#include <algorithm>
+
+#include <dlfl/create_face_manifold.h>
+
+namespace dlfl::detail {
+
+HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_points,
+                                 bool want_face_of_vertex) {
+  std::size_t C = 0, F = 0, P = 0;  // corners and faces of 2 or more corners, point spheres
+  std::uint32_t max_n = 0;
+  for (FaceId f : mesh.faces()) {
+    const std::uint32_t n = mesh.size(f);
+    if (n == 1) {
+      ++P;
+      continue;
+    }
+    ++F;
+    C += n;
+    max_n = std::max(max_n, n);
+  }
+  // Exact final capacities, tombstones included. CREATEFACEMANIFOLD of N points appends N vertices, N edges,
+  // 2N corners (N from create_vertex, none for the first insert_edge between two point spheres, one for each
+  // of the next N - 2, two for the closing one) and N + 1 faces (N point spheres, N - 1 of them merged away,
+  // plus the one the closing split creates). Step 2 appends per edge 2 corners, 1 edge, and 1 face if it
+  // splits. From 2F faces the merges and splits end at F + V, so splits - merges = V - F and
+  // splits + merges = E.
+  const std::size_t E = mesh.num_edges();
+  const std::size_t V = mesh.num_vertices() - std::min(P, mesh.num_vertices());
+  const std::size_t splits = E + V >= F ? (E + V - F) / 2 : 0;
+  HoneycombRemesh out;
+  Mesh& result = out.mesh;
+  result.reserve(C + P, C + E, C + F + splits + P, 2 * C + 2 * E + P);
+  out.face_of_face.assign(mesh.face_capacity(), FaceId());
+  if (want_face_of_vertex) out.face_of_vertex.assign(mesh.vertex_capacity(), FaceId());
+
+  // Old corner -> back corner of the new vertex made for it; and, when the vertex faces are wanted, -> its
+  // front corner.
+  std::vector<CornerId> back_of(mesh.corner_capacity());
+  std::vector<CornerId> front_of(want_face_of_vertex ? mesh.corner_capacity() : 0);
+  std::vector<glm::dvec3> points(max_n);
+  std::vector<CornerId> old_corners(max_n), back_corners(max_n), front_corners(max_n);
+
+  // Step 1: a face manifold per face.
+  for (FaceId f : mesh.faces()) {
+    const std::uint32_t N = mesh.size(f);
+    if (N == 1) {
+      const VertexId v = mesh.vertex(mesh.first_corner(f));
+      const VertexId copy = result.create_vertex(mesh.position(v));
+      if (want_face_of_vertex) out.face_of_vertex[v.index()] = result.face(result.corner(copy));
+      continue;
+    }
+    std::uint32_t i = 0;
+    for (CornerId c : mesh.corners(f)) old_corners[i++] = c;
+    face_points(f, std::span<const CornerId>(old_corners.data(), N), std::span<glm::dvec3>(points.data(), N));
+    const FaceManifold fm = create_face_manifold(
+        result, std::span<const glm::dvec3>(points.data(), N), {},
+        want_face_of_vertex ? std::span<CornerId>(front_corners.data(), N) : std::span<CornerId>(),
+        std::span<CornerId>(back_corners.data(), N));
+    if (mesh.is_hole(f)) result.set_hole(fm.front, true);
+    out.face_of_face[f.index()] = fm.front;
+    for (i = 0; i < N; ++i) back_of[old_corners[i].index()] = back_corners[i];
+    if (want_face_of_vertex) {
+      for (i = 0; i < N; ++i) front_of[old_corners[i].index()] = front_corners[i];
+    }
+  }
+
+  // Step 2: join the two new vertices of each edge, across the edge, through their back corners. Each back
+  // corner keeps its vertex and outgoing edge through every insert_edge, so the map stays valid.
+  for (EdgeId e : mesh.edges()) {
+    result.insert_edge(back_of[mesh.corner(e, 0).index()], back_of[mesh.corner(e, 1).index()]);
+  }
+
+  // The front face's side from the point of corner c to the point of next(c) joins two points next to the old
+  // vertex of next(c) (both on edges at it), so the face across that side is that vertex's face.
+  if (want_face_of_vertex) {
+    for (CornerId c : mesh.corners()) {
+      if (!mesh.edge(c).valid()) continue;  // a point sphere's corner
+      out.face_of_vertex[mesh.vertex(mesh.next(c)).index()] =
+          result.face(result.opposite(front_of[c.index()]));
+    }
+  }
+  return out;
+}
+
+}  // namespace dlfl::detail

@@ -1,0 +1,39 @@
+#pragma once
+// The remeshing of honeycomb subdivision (Akleman and Srinivasan, section 4), shared by every scheme with the
+// honeycomb's topology (the DLFL honeycomb and Zhang-Wang's honeycomb with central control vertices). Only
+// the new points differ between them; the operators that connect the points are the same.
+
+#include <functional>
+#include <span>
+#include <vector>
+
+#include <dlfl/mesh.h>
+
+namespace dlfl::detail {
+
+/// The new points of one face: `corners` are the face's corners from its first corner, and `points[i]` must
+/// receive the new vertex for corner i, the one on the edge leaving that corner (both spans have the face's
+/// size).
+using FacePointsFn =
+    std::function<void(FaceId face, std::span<const CornerId> corners, std::span<glm::dvec3> points)>;
+
+/// A honeycomb step's mesh, with where its faces came from.
+struct HoneycombRemesh {
+  Mesh mesh;
+  /// By input face handle: the new face that is the face's shrunken copy (its front face); invalid for
+  /// removed faces and for point spheres (whose vertex is copied and has no front face).
+  std::vector<FaceId> face_of_face;
+  /// By input vertex handle, filled only when asked for: the new face around the vertex (for a point sphere,
+  /// the copied point sphere's face); invalid for removed vertices.
+  std::vector<FaceId> face_of_vertex;
+};
+
+/// Section 4 on the kernel's operators: for every live face of `mesh` in handle order, CREATEFACEMANIFOLD of
+/// the points `face_points` gives (the front face starts at the point for the face's first corner; a hole's
+/// front face is flagged as a hole again), or `create_vertex` at the same place for a point sphere; then,
+/// for every live edge in handle order, INSERTEDGE between the back corners of the two points made for its
+/// two sides. V' = 2E, E' = 3E, F' = F + V, every new vertex 3-valent. All elements are reserved up front.
+/// `face_points` is called once per face, in handle order.
+HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_points, bool want_face_of_vertex);
+
+}  // namespace dlfl::detail

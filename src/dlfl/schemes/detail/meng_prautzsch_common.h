@@ -1,0 +1,120 @@
+#pragma once
+// What the Meng-Prautzsch schemes H and P share: the per-element random choices (the paper, section 1.2,
+// tried choosing the ratio of every edge and the offset of every face independently), portable and
+// reproducible, and the checks of their common parameters.
+
+#include <cmath>
+#include <cstdint>
+#include <glm/vec3.hpp>
+#include <optional>
+#include <random>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <dlfl/errors.h>
+#include <dlfl/mesh.h>
+#include <dlfl/analysis/convex_polyhedron.h>
+
+namespace dlfl {
+
+/// Random per-element parameters. When `enabled`, every edge gets its own split fraction and every face (H)
+/// or vertex (P) its own tau, each uniform in [epsilon, 1 - epsilon]; `epsilon` is the paper's honeycomb or
+/// pushing tolerance, so edge ratios lie in [epsilon : (1 - epsilon), (1 - epsilon) : epsilon]. The same seed
+/// gives the same choices on every platform.
+struct MpRandomChoice {
+  bool enabled = false;
+  double epsilon = 0.25;  ///< in (0, 1/2]
+  std::uint64_t seed = 1;
+};
+
+/// Uniform doubles from std::mt19937_64, whose output sequence the C++ standard fixes. The mapping to
+/// [0, 1) is ours (53 high bits times 2^-53) because std::uniform_real_distribution differs between standard
+/// libraries.
+class MpRandom {
+ public:
+  explicit MpRandom(std::uint64_t seed) : engine_(seed) {}
+  /// Uniform in [lo, hi).
+  double uniform(double lo, double hi) {
+    const double unit = double(engine_() >> 11) * 0x1.0p-53;
+    return lo + (hi - lo) * unit;
+  }
+
+ private:
+  std::mt19937_64 engine_;
+};
+
+namespace detail {
+
+/// A number for an error message, as short as it can be ("0", "1.5", "1e-12").
+inline std::string format_number(double x) {
+  std::ostringstream s;
+  s << x;
+  return s.str();
+}
+
+/// Throws InvalidArgument naming `scheme` and the parameter if tau is not in (0, 1), ratio is not positive
+/// and finite, the centre is not finite, or epsilon is not in (0, 1/2] (checked whether or not random choices
+/// are on, so that a wrong value never passes unnoticed).
+inline void check_mp_params(const char* scheme, double tau, double ratio,
+                            const std::optional<glm::dvec3>& center, const MpRandomChoice& random) {
+  const std::string s(scheme);
+  if (!(tau > 0.0 && tau < 1.0)) {
+    throw InvalidArgument(s + ": parameter tau must be in (0, 1), not " + format_number(tau));
+  }
+  if (!(ratio > 0.0 && std::isfinite(ratio))) {
+    throw InvalidArgument(s + ": parameter ratio must be positive and finite, not " + format_number(ratio));
+  }
+  if (center && !(std::isfinite(center->x) && std::isfinite(center->y) && std::isfinite(center->z))) {
+    throw InvalidArgument(s + ": parameter center must be finite");
+  }
+  if (!(random.epsilon > 0.0 && random.epsilon <= 0.5)) {
+    throw InvalidArgument(s + ": parameter epsilon must be in (0, 0.5], not " +
+                          format_number(random.epsilon));
+  }
+}
+
+/// Throws InvalidArgument if a step with `edges_out` output edges would have more corners (2 per edge) than
+/// 32-bit handles can number, before anything is allocated.
+inline void check_output_size(const char* scheme, double edges_out) {
+  if (2.0 * edges_out > double(0xFFFFFFFEu)) {
+    throw InvalidArgument(std::string(scheme) + ": the result would have " + format_number(edges_out) +
+                          " edges, more than 32-bit handles can hold");
+  }
+}
+
+/// The result of an H or P step must be a strictly convex polyhedron like its input. Legal but extreme
+/// parameters (tau near 0 or 1, a ratio of 1e17) can round a new point onto an old one or flatten an edge;
+/// then the caller is told which parameters to move away from their bounds, instead of the next step
+/// failing on its input. O(size).
+inline Mesh require_convex_result(Mesh result, const glm::dvec3& centre, const char* scheme, double tau,
+                                  double ratio) {
+  if (auto violation = convexity_violation(result, centre)) {
+    throw InvalidArgument(std::string(scheme) + ": tau = " + format_number(tau) + " and ratio = " +
+                          format_number(ratio) + " give a result that is not strictly convex (" +
+                          violation->message + "); move them away from their bounds");
+  }
+  return result;
+}
+
+/// The per-element choices of one H or P step: a split fraction per edge (ratio / (1 + ratio)) and a tau per
+/// face (H) or vertex (P), or, with `random` on, all of them drawn uniformly in [epsilon, 1 - epsilon] from
+/// the seed, edges first, then the other elements, in handle order.
+struct MpChoices {
+  std::vector<double> fraction;
+  std::vector<double> tau;
+};
+inline MpChoices mp_choices(std::size_t edges, std::size_t elements, double ratio, double tau,
+                            const MpRandomChoice& random) {
+  MpChoices c{std::vector<double>(edges, ratio / (1.0 + ratio)), std::vector<double>(elements, tau)};
+  if (random.enabled) {
+    MpRandom rng(random.seed);
+    const double lo = random.epsilon, hi = 1.0 - random.epsilon;
+    for (double& s : c.fraction) s = rng.uniform(lo, hi);
+    for (double& t : c.tau) t = rng.uniform(lo, hi);
+  }
+  return c;
+}
+
+}  // namespace detail
+}  // namespace dlfl

@@ -1,0 +1,89 @@
+#include <dlfl/schemes/dual.h>
+
+#include <optional>
+#include <vector>
+
+#include <dlfl/errors.h>
+#include <dlfl/mesh_assembler.h>
+
+namespace dlfl {
+namespace {
+
+// The k-th live element of a range: the handle that dense_mesh renumbered to k (compact keeps the order).
+template <class Range>
+auto original(const Range& range, std::uint32_t k) {
+  for (auto h : range) {
+    if (k-- == 0) return h;
+  }
+  return decltype(*range.begin())();
+}
+
+}  // namespace
+
+Mesh dual(const Mesh& input) {
+  std::optional<Mesh> storage;
+  const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
+  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
+  const auto ne = static_cast<std::uint32_t>(m.num_edges());
+  const auto nf = static_cast<std::uint32_t>(m.num_faces());
+  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    if (m.is_hole(FaceId(f))) {
+      throw TopologyError("dual: " + to_string(original(input.faces(), f)) +
+                          " is a hole: the dual of an open mesh is not defined");
+    }
+  }
+  for (std::uint32_t e = 0; e < ne; ++e) {
+    if (m.face(EdgeId(e), 0) == m.face(EdgeId(e), 1)) {
+      throw TopologyError("dual: " + to_string(original(input.edges(), e)) +
+                          " has the same face on both sides (its dual would be a self-loop)");
+    }
+  }
+
+  // Output face v owns the corners offsets[v] .. offsets[v+1]-1: vslot[c] is the one for input corner c.
+  //
+  // Orientation. Let c be a corner at v in face f, p = prev(c). Seen from outside f is counter-clockwise, so
+  // at v its interior is the angle swept counter-clockwise from the direction of edge(c) (towards next(c)) to
+  // that of edge(p) (towards vertex(p)). Turning further counter-clockwise crosses edge(p) into the face of
+  // opposite(p), whose corner at v is opposite(p) itself (it starts where p's edge ends): that is
+  // prev_around_vertex(c). So listing the faces around v along prev_around_vertex is counter-clockwise and the
+  // dual face's normal points outward.
+  std::vector<std::uint32_t> offsets(std::size_t(nv) + 1);
+  std::vector<std::uint32_t> vslot(nc);
+  std::uint32_t next_slot = 0;
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    offsets[v] = next_slot;
+    const CornerId first = m.corner(VertexId(v));
+    if (!m.edge(first).valid()) {
+      throw TopologyError("dual: " + to_string(original(input.vertices(), v)) + " is a point sphere (no edge)");
+    }
+    CornerId c = first;
+    do {
+      vslot[c.index()] = next_slot++;
+      c = m.prev_around_vertex(c);
+    } while (c != first);
+  }
+  offsets[nv] = next_slot;
+
+  MeshAssembler out(nf, offsets);
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    glm::dvec3 sum(0.0);
+    for (CornerId c : m.corners(FaceId(f))) sum += m.position(m.vertex(c));
+    out.set_position(f, sum / double(m.size(FaceId(f))));
+  }
+
+  // Twins. The dual corner of c (at v, in face f) runs from dual vertex f to dual vertex face(d), d =
+  // opposite(p), p = prev(c): it crosses the input edge g = edge(p), which runs from w = vertex(p) to v. Its
+  // twin is the dual corner in face w that crosses g from face(d) back to f: the corner c' at w in face(d)
+  // whose prev has edge g, i.e. prev(c') = d, c' = next(d) = next(opposite(prev(c))). (Applying the rule to c'
+  // gives next(opposite(d)) = next(p) = c back.)
+  for (std::uint32_t k = 0; k < nc; ++k) {
+    const CornerId c(k);
+    const CornerId twin = m.next(m.opposite(m.prev(c)));
+    out.set_corner(vslot[k], m.face(c).index(), vslot[twin.index()]);
+  }
+  return out.finish();
+}
+
+}  // namespace dlfl

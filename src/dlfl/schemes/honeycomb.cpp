@@ -1,0 +1,173 @@
+#include <dlfl/schemes/honeycomb.h>
+
+#include <algorithm>
+#include <array>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <dlfl/errors.h>
+#include <dlfl/schemes/detail/honeycomb_remesh.h>
+
+namespace dlfl {
+namespace {
+
+// Faces up to this size use the circulant weights directly, O(N^2) from a table built once per size; larger
+// faces use the closed form of the cosine sum, O(N), so a huge hole face cannot make a step quadratic.
+constexpr std::uint32_t direct_max = 64;
+
+// What the parameter check and the reservation need to know about the faces, in one pass.
+struct FaceSummary {
+  std::uint32_t min_size = std::numeric_limits<std::uint32_t>::max();  // over faces of 2 or more corners
+  std::uint32_t max_size = 0;
+  std::size_t polygon_faces = 0;    // faces of 2 or more corners (holes included)
+  std::size_t polygon_corners = 0;  // their corners
+  std::size_t point_spheres = 0;    // faces of 1 corner
+};
+
+FaceSummary summarize(const Mesh& mesh) {
+  FaceSummary s;
+  for (FaceId f : mesh.faces()) {
+    const std::uint32_t n = mesh.size(f);
+    if (n == 1) {
+      ++s.point_spheres;
+      continue;
+    }
+    ++s.polygon_faces;
+    s.polygon_corners += n;
+    s.min_size = std::min(s.min_size, n);
+    s.max_size = std::max(s.max_size, n);
+  }
+  return s;
+}
+
+// The shortest text that reads back as x, so that a message never shows a rejected value as an accepted one
+// (a fixed precision would print 1 + 1e-9 as "1").
+std::string number(double x) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+bool in_open_unit(double x) { return x > 0.0 && x < 1.0; }  // false for NaN
+
+void check_params(const FaceSummary& s, const HoneycombParams& p) {
+  if (!(p.t >= 0.0 && p.t <= 1.0))
+    throw InvalidArgument("honeycomb: parameter t = " + number(p.t) + " is outside [0, 1]");
+  if (p.a) {
+    if (!in_open_unit(*p.a))
+      throw InvalidArgument("honeycomb: parameter a = " + number(*p.a) + " is outside (0, 1)");
+    return;
+  }
+  if (s.polygon_faces == 0) return;
+  // a0 + a1/N is monotonic in N, so it lies in the (convex) interval (0, 1) for every size present as soon
+  // as it does for the smallest and the largest.
+  for (std::uint32_t n : {s.min_size, s.max_size}) {
+    const double a = honeycomb_tension(p, int(n));
+    if (!in_open_unit(a)) {
+      throw InvalidArgument("honeycomb: tension a0 + a1/N = " + number(a) + " for a " + std::to_string(n) +
+                            "-sided face is outside (0, 1) (parameters a0, a1)");
+    }
+  }
+}
+
+// beta (1 - a) / (3N - 5) for the index difference k = n - m mod N, k != 0.
+double off_diagonal(std::uint32_t N, std::uint32_t k, double a) {
+  const double beta = 3.0 + 2.0 * std::cos(2.0 * std::numbers::pi * double(k) / double(N));
+  return beta * (1.0 - a) / (3.0 * double(N) - 5.0);
+}
+
+// Row weights w[k] = a_{n, n-k} per face size N <= direct_max, built on first use.
+class WeightTable {
+ public:
+  explicit WeightTable(const HoneycombParams& p) : params_(p) {}
+  const double* row(std::uint32_t N) {
+    double* w = weights_[N].data();
+    if (!ready_[N]) {
+      const double a = honeycomb_tension(params_, int(N));
+      w[0] = a;
+      for (std::uint32_t k = 1; k < N; ++k) w[k] = off_diagonal(N, k, a);
+      ready_[N] = true;
+    }
+    return w;
+  }
+
+ private:
+  const HoneycombParams& params_;
+  std::array<bool, direct_max + 1> ready_{};
+  std::array<std::array<double, direct_max>, direct_max + 1> weights_{};
+};
+
+}  // namespace
+
+double honeycomb_coefficient(int N, int n, int m, double a) {
+  if (N < 2 || n < 0 || m < 0 || n >= N || m >= N) {
+    throw InvalidArgument("honeycomb_coefficient: needs N >= 2 and 0 <= n, m < N, got N = " +
+                          std::to_string(N) + ", n = " + std::to_string(n) + ", m = " + std::to_string(m));
+  }
+  if (n == m) return a;
+  return off_diagonal(std::uint32_t(N), std::uint32_t((n - m + N) % N), a);
+}
+
+double honeycomb_tension(const HoneycombParams& p, int N) { return p.a ? *p.a : p.a0 + p.a1 / double(N); }
+
+void check_honeycomb_params(const Mesh& mesh, const HoneycombParams& p) { check_params(summarize(mesh), p); }
+
+Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p) {
+  const FaceSummary s = summarize(mesh);
+  check_params(s, p);
+
+  const std::size_t max_n = s.max_size;
+  std::vector<glm::dvec3> edge_points(max_n);
+  std::vector<double> cosines(max_n > direct_max ? max_n : 0), sines(cosines.size());
+  WeightTable table(p);
+  const double t = p.t;
+
+  const auto face_points = [&](FaceId, std::span<const CornerId> corners, std::span<glm::dvec3> new_points) {
+    const auto N = std::uint32_t(corners.size());
+    // Work relative to v_0: the weights sum to 1, and small differences keep precision far from the origin.
+    const glm::dvec3 origin = mesh.position(mesh.vertex(corners[0]));
+    glm::dvec3 d_first(0.0), d = d_first;
+    for (std::uint32_t i = 0; i < N; ++i) {
+      const glm::dvec3 d_next =
+          i + 1 < N ? mesh.position(mesh.vertex(corners[i + 1])) - origin : d_first;  // v_{i+1} - v_0
+      edge_points[i] = (1.0 - t) * d + t * d_next;  // formula (1): the point on edge e_i
+      d = d_next;
+    }
+    if (N <= direct_max) {
+      // Formula (2) is circulant: a_{n,m} depends on n - m mod N only.
+      const double* w = table.row(N);
+      for (std::uint32_t n = 0; n < N; ++n) {
+        glm::dvec3 sum(0.0);
+        for (std::uint32_t m = 0; m < N; ++m) sum += w[n >= m ? n - m : n + N - m] * edge_points[m];
+        new_points[n] = origin + sum;
+      }
+      return;
+    }
+    // sum_{m != n} (3 + 2 cos(theta (n - m))) p_m = 3 P + 2 (cos(theta n) Cs + sin(theta n) Sn) - 5 p_n,
+    // with P = sum p_m, Cs = sum cos(theta m) p_m, Sn = sum sin(theta m) p_m, theta = 2 pi / N.
+    const double a = honeycomb_tension(p, int(N));
+    const double scale = (1.0 - a) / (3.0 * double(N) - 5.0);
+    glm::dvec3 total(0.0), cos_sum(0.0), sin_sum(0.0);
+    for (std::uint32_t m = 0; m < N; ++m) {
+      const double angle = 2.0 * std::numbers::pi * double(m) / double(N);
+      cosines[m] = std::cos(angle);
+      sines[m] = std::sin(angle);
+      total += edge_points[m];
+      cos_sum += cosines[m] * edge_points[m];
+      sin_sum += sines[m] * edge_points[m];
+    }
+    for (std::uint32_t n = 0; n < N; ++n) {
+      const glm::dvec3 rest =
+          3.0 * total + 2.0 * (cosines[n] * cos_sum + sines[n] * sin_sum) - 5.0 * edge_points[n];
+      new_points[n] = origin + (a * edge_points[n] + scale * rest);
+    }
+  };
+  return detail::honeycomb_remesh(mesh, face_points, false).mesh;
+}
+
+}  // namespace dlfl

@@ -1,0 +1,127 @@
+#include <dlfl/schemes/meng_prautzsch_honeycomb.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <limits>
+#include <vector>
+
+#include <dlfl/errors.h>
+#include <dlfl/mesh_assembler.h>
+#include <dlfl/analysis/convex_polyhedron.h>
+
+namespace dlfl {
+namespace {
+
+// The unit vector at fraction s of the great-circle arc from a to b (a, b unit, not parallel).
+glm::dvec3 slerp(const glm::dvec3& a, const glm::dvec3& b, double s) {
+  const double theta = std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
+  const glm::dvec3 n = (std::sin((1.0 - s) * theta) * a + std::sin(s * theta) * b) / std::sin(theta);
+  return glm::normalize(n);
+}
+
+}  // namespace
+
+void check_mp_honeycomb_params(const MpHoneycombParams& p) {
+  detail::check_mp_params("mp-honeycomb", p.tau, p.ratio, p.center, p.random);
+}
+
+Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
+  check_mp_honeycomb_params(params);
+  std::optional<Mesh> storage;
+  const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
+  const glm::dvec3 center = params.center.value_or(vertex_centroid(m));
+  require_convex_polyhedron(m, center, "mp-honeycomb");
+  detail::check_output_size("mp-honeycomb", 4.0 * double(m.num_edges()));
+  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
+  const auto ne = static_cast<std::uint32_t>(m.num_edges());
+  const auto nf = static_cast<std::uint32_t>(m.num_faces());
+  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+
+  // Per-edge split fractions of the exterior angle, per-face taus (drawn from the seed when random).
+  const auto [fraction, tau] = detail::mp_choices(ne, nf, params.ratio, params.tau, params.random);
+
+  std::vector<glm::dvec3> face_normal(nf);
+  for (std::uint32_t f = 0; f < nf; ++f) face_normal[f] = face_plane(m, FaceId(f)).normal;
+  // Edge planes pass through their edge; only their normals are needed, as every plane below is met at a
+  // point known to lie on it (an old vertex).
+  std::vector<glm::dvec3> edge_normal(ne);
+  for (std::uint32_t e = 0; e < ne; ++e) {
+    const EdgeId id(e);
+    edge_normal[e] =
+        slerp(face_normal[m.face(id, 0).index()], face_normal[m.face(id, 1).index()], fraction[e]);
+  }
+
+  // Output faces: the f-faces in input face order, then one hexagon per input edge (6 corners each).
+  std::vector<std::uint32_t> offsets(std::size_t(nf) + ne + 1);
+  std::vector<std::uint32_t> position(nc);  // the f-face corner made from input corner c
+  std::uint32_t k = 0;
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    offsets[f] = k;
+    for (CornerId c : m.corners(FaceId(f))) position[c.index()] = k++;
+  }
+  for (std::uint32_t e = 0; e <= ne; ++e) offsets[nf + e] = nc + 6 * e;
+  MeshAssembler out(std::size_t(nv) + nc, offsets);
+  for (std::uint32_t v = 0; v < nv; ++v) out.set_position(v, m.position(VertexId(v)));
+
+  // f-face vertices. Corner j of face F (at old vertex p_j) slides up the line where the planes of the two
+  // edges at p_j meet: q_j(t) = p_j + t w_j at height t above F (dot(n_F, w_j) = 1). The cross-section's
+  // edge j keeps the direction of F's edge j and its length changes linearly; the first to vanish marks v_F.
+  std::vector<glm::dvec3> slide;  // w_j of the current face, reused
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    const FaceId face(f);
+    const glm::dvec3& n = face_normal[f];
+    slide.clear();
+    for (CornerId c : m.corners(face)) {
+      const glm::dvec3 line =
+          glm::cross(edge_normal[m.edge(m.prev(c)).index()], edge_normal[m.edge(c).index()]);
+      const double rise = glm::dot(n, line);
+      if (!(std::abs(rise) > 1e-12 * glm::length(line))) {
+        throw InvalidArgument("mp-honeycomb: the edge planes at " + to_string(m.vertex(c)) + " of " +
+                              to_string(face) + " meet in a line parallel to the face");
+      }
+      slide.push_back(line / rise);
+    }
+    double height = std::numeric_limits<double>::infinity();
+    std::uint32_t j = 0;
+    for (CornerId c : m.corners(face)) {
+      const glm::dvec3 along = m.position(m.vertex(m.next(c))) - m.position(m.vertex(c));
+      const double length = glm::length(along);
+      const double rate = glm::dot(slide[(j + 1) % slide.size()] - slide[j], along / length);
+      if (rate < 0.0) height = std::min(height, length / -rate);
+      ++j;
+    }
+    if (!std::isfinite(height)) {
+      throw InvalidArgument("mp-honeycomb: the region Delta over " + to_string(face) +
+                            " is unbounded (its edge planes open outwards); use ratios closer to 1");
+    }
+    j = 0;
+    for (CornerId c : m.corners(face)) {
+      out.set_position(nv + c.index(), m.position(m.vertex(c)) + tau[f] * height * slide[j++]);
+    }
+  }
+
+  // Connectivity. The hexagon of edge e runs from(e), Q(next c1), Q(c1), to(e), Q(next c0), Q(c0), with
+  // c0, c1 its side corners and Q(x) the f-face vertex of corner x. Seen from an input corner x, its edge's
+  // hexagon holds three of x's half-edges: "down" Q(x) -> vertex(x), "across" Q(next x) -> Q(x) (the twin of
+  // the f-face edge) and "up" vertex(next x) -> Q(next x).
+  const auto hexagon = [&](CornerId x) { return nc + 6 * m.edge(x).index(); };
+  const auto on_side_1 = [&](CornerId x) { return m.corner(m.edge(x), 1) == x; };
+  const auto down = [&](CornerId x) { return hexagon(x) + (on_side_1(x) ? 2 : 5); };
+  const auto across = [&](CornerId x) { return hexagon(x) + (on_side_1(x) ? 1 : 4); };
+  const auto up = [&](CornerId x) { return hexagon(x) + (on_side_1(x) ? 0 : 3); };
+  for (std::uint32_t i = 0; i < nc; ++i) out.set_corner(position[i], nv + i, across(CornerId(i)));
+  for (std::uint32_t e = 0; e < ne; ++e) {
+    const CornerId c0 = m.corner(EdgeId(e), 0), c1 = m.corner(EdgeId(e), 1);
+    const std::uint32_t base = nc + 6 * e;
+    out.set_corner(base + 0, m.vertex(c0).index(), down(m.next(c1)));
+    out.set_corner(base + 1, nv + m.next(c1).index(), position[c1.index()]);
+    out.set_corner(base + 2, nv + c1.index(), up(m.prev(c1)));
+    out.set_corner(base + 3, m.vertex(c1).index(), down(m.next(c0)));
+    out.set_corner(base + 4, nv + m.next(c0).index(), position[c0.index()]);
+    out.set_corner(base + 5, nv + c0.index(), up(m.prev(c0)));
+  }
+  return detail::require_convex_result(out.finish(), center, "mp-honeycomb", params.tau, params.ratio);
+}
+
+}  // namespace dlfl

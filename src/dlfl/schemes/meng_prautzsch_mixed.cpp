@@ -1,0 +1,136 @@
+#include <dlfl/schemes/meng_prautzsch_mixed.h>
+
+#include <cctype>
+
+#include <dlfl/errors.h>
+#include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/schemes/detail/meng_prautzsch_common.h>
+
+namespace dlfl {
+namespace {
+
+// Recursive descent over the grammar in mhp.h; every failure names its position.
+class PatternParser {
+ public:
+  explicit PatternParser(std::string_view text) : text_(text) {}
+
+  std::string parse() {
+    std::string steps = sequence();
+    if (pos_ < text_.size()) fail("unmatched ')'");
+    return steps;
+  }
+
+ private:
+  std::string sequence() {
+    std::string steps;
+    while (pos_ < text_.size() && text_[pos_] != ')') steps += item(steps.size());
+    if (steps.empty()) fail("expected H, P or '('");
+    return steps;
+  }
+
+  // One item with its count; `before` steps precede it in the enclosing sequence (for the length limit).
+  std::string item(std::size_t before) {
+    std::string unit;
+    const char c = text_[pos_];
+    if (c == 'H' || c == 'h' || c == 'P' || c == 'p') {
+      unit = char(std::toupper(static_cast<unsigned char>(c)));
+      ++pos_;
+    } else if (c == '(') {
+      // Groups nest by recursion: bound the depth so that no pattern can exhaust the stack.
+      if (++depth_ > mhp_max_depth) fail("groups nested deeper than " + std::to_string(mhp_max_depth));
+      ++pos_;
+      unit = sequence();
+      --depth_;
+      if (pos_ >= text_.size()) fail("expected ')'");
+      ++pos_;
+    } else {
+      fail(std::string("expected H, P or '(', not '") + c + "'");
+    }
+    std::size_t count = 1;
+    if (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) {
+      const std::size_t start = pos_;
+      count = 0;
+      while (pos_ < text_.size() && std::isdigit(static_cast<unsigned char>(text_[pos_]))) {
+        count = count * 10 + std::size_t(text_[pos_++] - '0');
+        if (count > mhp_max_steps) too_long();
+      }
+      if (count == 0) {
+        pos_ = start;
+        fail("a count must be at least 1");
+      }
+    }
+    if (before + unit.size() * count > mhp_max_steps) too_long();
+    std::string steps;
+    for (std::size_t i = 0; i < count; ++i) steps += unit;
+    return steps;
+  }
+
+  [[noreturn]] void too_long() {
+    fail("the pattern expands to more than " + std::to_string(mhp_max_steps) + " steps");
+  }
+
+  [[noreturn]] void fail(const std::string& what) const {
+    const std::string text(text_);
+    throw InvalidArgument("mhp: malformed pattern '" + text + "' at character " + std::to_string(pos_ + 1) +
+                          " (" + text.substr(0, pos_) + "^" + text.substr(pos_) + "): " + what);
+  }
+
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::size_t depth_ = 0;
+};
+
+// Reruns `step`, putting "mhp step i (X): " in front of the message of any error, keeping its type.
+template <class Step>
+Mesh labelled(std::size_t i, char kind, const Step& step) {
+  const std::string label = "mhp step " + std::to_string(i) + " (" + kind + "): ";
+  try {
+    return step();
+  } catch (const TopologyError& e) {
+    throw TopologyError(label + e.what());
+  } catch (const InvalidArgument& e) {
+    throw InvalidArgument(label + e.what());
+  }
+}
+
+}  // namespace
+
+std::string expand_mhp_pattern(std::string_view pattern) { return PatternParser(pattern).parse(); }
+
+void check_mhp_params(const MhpParams& params) {
+  expand_mhp_pattern(params.pattern);
+  detail::check_mp_params("mhp", params.honeycomb.tau, params.honeycomb.ratio, params.center,
+                          params.honeycomb.random);
+  detail::check_mp_params("mhp", params.pushing.tau, params.pushing.ratio, params.center,
+                          params.pushing.random);
+}
+
+Mesh mhp(const Mesh& input, const MhpParams& params, const MhpStepObserver& observer) {
+  check_mhp_params(params);
+  const std::string steps = expand_mhp_pattern(params.pattern);
+  // Every step multiplies the edges by 4: refuse at once a pattern whose end could not be stored, rather than
+  // after minutes of steps.
+  double edges = double(input.num_edges());
+  for (std::size_t i = 0; i < steps.size(); ++i) edges *= 4.0;
+  detail::check_output_size(("mhp pattern '" + params.pattern + "'").c_str(), edges);
+  const glm::dvec3 center = params.center.value_or(vertex_centroid(input));
+  MpHoneycombParams h = params.honeycomb;
+  MpPushingParams p = params.pushing;
+  h.center = p.center = center;
+  Mesh current;
+  for (std::size_t i = 0; i < steps.size(); ++i) {
+    const char kind = steps[i];
+    const Mesh& source = i == 0 ? input : current;  // no copy of the input
+    if (kind == 'H') {
+      h.random.seed = params.honeycomb.random.seed + i;
+      current = labelled(i, kind, [&] { return mp_honeycomb(source, h); });
+    } else {
+      p.random.seed = params.pushing.random.seed + i;
+      current = labelled(i, kind, [&] { return mp_pushing(source, p); });
+    }
+    if (observer) observer(i, kind, current);
+  }
+  return current;
+}
+
+}  // namespace dlfl

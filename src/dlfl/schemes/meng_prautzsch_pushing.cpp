@@ -1,0 +1,91 @@
+#include <dlfl/schemes/meng_prautzsch_pushing.h>
+
+#include <algorithm>
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <vector>
+
+#include <dlfl/errors.h>
+#include <dlfl/mesh_assembler.h>
+#include <dlfl/analysis/convex_polyhedron.h>
+
+namespace dlfl {
+
+void check_mp_pushing_params(const MpPushingParams& p) {
+  detail::check_mp_params("mp-pushing", p.tau, p.ratio, p.center, p.random);
+}
+
+double pushing_extreme_fraction(const glm::dvec3& p, std::span<const glm::dvec3> ring,
+                                const glm::dvec3& center) {
+  const std::size_t ring_size = ring.size();
+  double extreme = 1.0;
+  const glm::dvec3 towards = center - p;
+  for (std::size_t i = 0; i < ring_size; ++i) {
+    const glm::dvec3& a = ring[(i + ring_size - 1) % ring_size];
+    const glm::dvec3& b = ring[i];
+    const glm::dvec3& c = ring[(i + 1) % ring_size];
+    const glm::dvec3 normal = glm::cross(b - a, c - b);
+    const double approach = glm::dot(normal, towards);
+    if (approach == 0.0) continue;  // moving parallel to this plane: never reaches it
+    const double s = glm::dot(normal, b - p) / approach;
+    if (s > 0.0) extreme = std::min(extreme, s);
+  }
+  return extreme;
+}
+
+Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
+  check_mp_pushing_params(params);
+  std::optional<Mesh> storage;
+  const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
+  const glm::dvec3 center = params.center.value_or(vertex_centroid(m));
+  require_convex_polyhedron(m, center, "mp-pushing");
+  detail::check_output_size("mp-pushing", 4.0 * double(m.num_edges()));
+  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
+  const auto ne = static_cast<std::uint32_t>(m.num_edges());
+  const auto nf = static_cast<std::uint32_t>(m.num_faces());
+  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+
+  // Per-edge split fractions along the edge, per-vertex taus (drawn from the seed when random).
+  const auto [fraction, tau] = detail::mp_choices(ne, nv, params.ratio, params.tau, params.random);
+
+  // Output faces: the central faces in input face order, then one triangle per input corner.
+  std::vector<std::uint32_t> offsets(std::size_t(nf) + nc + 1);
+  std::vector<std::uint32_t> position(nc);  // the central-face corner made from input corner c
+  std::uint32_t k = 0;
+  for (std::uint32_t f = 0; f < nf; ++f) {
+    offsets[f] = k;
+    for (CornerId c : m.corners(FaceId(f))) position[c.index()] = k++;
+  }
+  for (std::uint32_t i = 0; i <= nc; ++i) offsets[nf + i] = nc + 3 * i;
+  MeshAssembler out(std::size_t(nv) + ne, offsets);
+  std::vector<glm::dvec3> point(ne);
+  for (std::uint32_t e = 0; e < ne; ++e) {
+    const glm::dvec3& a = m.position(m.from(EdgeId(e)));
+    const glm::dvec3& b = m.position(m.to(EdgeId(e)));
+    point[e] = a + fraction[e] * (b - a);
+    out.set_position(nv + e, point[e]);
+  }
+  std::vector<glm::dvec3> ring;  // edge points around the current vertex, reused
+  for (std::uint32_t v = 0; v < nv; ++v) {
+    const glm::dvec3& p = m.position(VertexId(v));
+    ring.clear();
+    for (CornerId c : m.corners(VertexId(v))) ring.push_back(point[m.edge(c).index()]);
+    const double s = pushing_extreme_fraction(p, ring, center);
+    out.set_position(v, p + tau[v] * s * (center - p));
+  }
+
+  // Connectivity. The triangle of corner c runs vertex(c), m(edge c), m(edge prev c): its first edge is half
+  // of the old edge(c), whose other half ends the triangle of the corner across; its second faces the central
+  // face; its third is half of edge(prev c), which the triangle of the corner across starts with.
+  const auto triangle = [&](CornerId x) { return nc + 3 * x.index(); };
+  for (std::uint32_t i = 0; i < nc; ++i) {
+    const CornerId c(i);
+    out.set_corner(position[i], nv + m.edge(c).index(), triangle(m.next(c)) + 1);
+    out.set_corner(triangle(c) + 0, m.vertex(c).index(), triangle(m.next(m.opposite(c))) + 2);
+    out.set_corner(triangle(c) + 1, nv + m.edge(c).index(), position[m.prev(c).index()]);
+    out.set_corner(triangle(c) + 2, nv + m.edge(m.prev(c)).index(), triangle(m.opposite(m.prev(c))) + 0);
+  }
+  return detail::require_convex_result(out.finish(), center, "mp-pushing", params.tau, params.ratio);
+}
+
+}  // namespace dlfl

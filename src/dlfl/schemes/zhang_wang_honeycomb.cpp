@@ -1,0 +1,133 @@
+#include <dlfl/schemes/zhang_wang_honeycomb.h>
+
+#include <charconv>
+#include <cmath>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <dlfl/errors.h>
+#include <dlfl/schemes/detail/honeycomb_remesh.h>
+
+namespace dlfl {
+namespace {
+
+std::string number(double x) {
+  char buffer[64];
+  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
+  return std::string(buffer, result.ptr);
+}
+
+void check_unit(const char* name, double x) {
+  if (!(x >= 0.0 && x <= 1.0)) {
+    throw InvalidArgument(std::string("honeycomb-zw: parameter ") + name + " = " + number(x) +
+                          " is outside [0, 1]");
+  }
+}
+
+glm::dvec3 centroid(const Mesh& mesh, FaceId f) {
+  glm::dvec3 sum(0.0);
+  for (CornerId c : mesh.corners(f)) sum += mesh.position(mesh.vertex(c));
+  return sum / double(mesh.size(f));
+}
+
+double half_angle_cosine(int n, double b, const char* what) {
+  if (n < 3) throw InvalidArgument(std::string(what) + ": needs n >= 3, got " + std::to_string(n));
+  check_unit("b", b);
+  return std::cos(std::numbers::pi / double(n));
+}
+
+}  // namespace
+
+double zhang_wang_a(const ZhangWangParams& p, int n) {
+  if (n < 2) throw InvalidArgument("zhang_wang_a: needs n >= 2, got " + std::to_string(n));
+  return p.a ? *p.a : (4.0 - std::cos(2.0 * std::numbers::pi / double(n))) / 9.0;
+}
+
+void check_zhang_wang_params(const ZhangWangParams& p) {
+  if (p.a) check_unit("a", *p.a);
+  check_unit("b", p.b);
+  check_unit("c", p.c);
+  check_unit("alpha", p.alpha);
+}
+
+Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombOrigin* origin) {
+  check_zhang_wang_params(p);
+
+  // The CCV of every input face: its control point, or its centroid.
+  std::vector<glm::dvec3> ccv(mesh.face_capacity());
+  for (FaceId f : mesh.faces()) ccv[f.index()] = mesh.face_point_or_centroid(f);
+
+  const double b = p.b;
+  const auto face_points = [&](FaceId f, std::span<const CornerId> corners, std::span<glm::dvec3> points) {
+    const glm::dvec3 q = ccv[f.index()];
+    const std::size_t n = corners.size();
+    for (std::size_t i = 0; i < n; ++i) {  // formula (2): the point of the edge from p_i to p_{i+1}
+      const glm::dvec3 mid =
+          0.5 * (mesh.position(mesh.vertex(corners[i])) + mesh.position(mesh.vertex(corners[(i + 1) % n])));
+      points[i] = (1.0 - b) * q + b * mid;
+    }
+  };
+  detail::HoneycombRemesh out = detail::honeycomb_remesh(mesh, face_points, true);
+  Mesh& result = out.mesh;
+
+  // Formula (3): the shrunken copy of each face.
+  for (FaceId f : mesh.faces()) {
+    const FaceId copy = out.face_of_face[f.index()];
+    if (!copy.valid()) continue;  // a point sphere
+    const double a = zhang_wang_a(p, int(mesh.size(f)));
+    result.set_face_point(copy, (1.0 - a) * ccv[f.index()] + a * centroid(mesh, f));
+  }
+
+  // Formula (4): sums over the neighbours and the faces around each vertex, one corner at a time (the corner
+  // c at v has the neighbour vertex(next(c)) along its outgoing edge and the face face(c)).
+  std::vector<glm::dvec3> neighbour_sum(mesh.vertex_capacity(), glm::dvec3(0.0));
+  std::vector<glm::dvec3> ccv_sum(mesh.vertex_capacity(), glm::dvec3(0.0));
+  std::vector<std::uint32_t> valence(mesh.vertex_capacity(), 0);
+  for (CornerId c : mesh.corners()) {
+    if (!mesh.edge(c).valid()) continue;  // a point sphere
+    const std::uint32_t v = mesh.vertex(c).index();
+    neighbour_sum[v] += mesh.position(mesh.vertex(mesh.next(c)));
+    ccv_sum[v] += ccv[mesh.face(c).index()];
+    ++valence[v];
+  }
+  for (VertexId v : mesh.vertices()) {
+    const std::uint32_t n = valence[v.index()];
+    if (n == 0) continue;  // a point sphere: copied without a CCV
+    const glm::dvec3 average =
+        (p.alpha * neighbour_sum[v.index()] + (1.0 - p.alpha) * ccv_sum[v.index()]) / double(n);
+    result.set_face_point(out.face_of_vertex[v.index()], (1.0 - p.c) * mesh.position(v) + p.c * average);
+  }
+  if (origin) {
+    origin->face_of_face = std::move(out.face_of_face);
+    origin->face_of_vertex = std::move(out.face_of_vertex);
+  }
+  return std::move(out.mesh);
+}
+
+glm::dvec3 zhang_wang_limit_point(const Mesh& mesh, FaceId f, const ZhangWangParams& p) {
+  check_zhang_wang_params(p);
+  if (!mesh.is_alive(f)) throw InvalidArgument("zhang_wang_limit_point: " + to_string(f) + " does not exist");
+  const std::uint32_t n = mesh.size(f);
+  if (n < 2) throw InvalidArgument("zhang_wang_limit_point: " + to_string(f) + " is a point sphere");
+  const double a = zhang_wang_a(p, int(n)), b = p.b;
+  const double denominator = 1.0 + a - b;
+  if (!(denominator > 0.0)) {
+    throw InvalidArgument(
+        "zhang_wang_limit_point: with a = 0 and b = 1 a face's centre never moves, so it has "
+        "no single limit");
+  }
+  return ((1.0 - b) * mesh.face_point_or_centroid(f) + a * centroid(mesh, f)) / denominator;
+}
+
+TensionBounds zhang_wang_paper_bounds(int n, double b) {
+  const double c = half_angle_cosine(n, b, "zhang_wang_paper_bounds");
+  return {c / (1.0 + c) * b, c / (1.0 - c) * b};
+}
+
+TensionBounds zhang_wang_eigen_bounds(int n, double b) {
+  const double c = half_angle_cosine(n, b, "zhang_wang_eigen_bounds");
+  return {b * (1.0 - c), b * (1.0 + c)};
+}
+
+}  // namespace dlfl

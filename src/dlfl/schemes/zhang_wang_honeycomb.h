@@ -1,0 +1,91 @@
+#pragma once
+// Zhang and Wang's honeycomb subdivision with central control vertices ("Honeycomb subdivision", Journal of
+// Software 2002): the honeycomb's topology (dlfl/schemes/honeycomb.h) with every face carrying a central control
+// vertex (CCV), stored as the face's control point (`Mesh::face_point`). A face without one uses its
+// centroid (the barycenter of its vertices), which is also what a loaded mesh starts with.
+//
+// One step, for a face P = [q; p_1 .. p_n] (q its CCV, p_i its vertices in order):
+//   new edge vertex  p'_i = (1 - b_n) q + b_n (p_i + p_{i+1}) / 2                       formula (2)
+//   new face's CCV   q'   = (1 - a_n) q + a_n p_bar,  p_bar = (p_1 + .. + p_n) / n        formula (3)
+// and for an old vertex v of valence n, with neighbours p_i and the CCVs q_i of the faces around it, the new
+// face around v gets the CCV
+//   q~ = (1 - c_n) v + c_n (sum alpha_i p_i + sum beta_i q_i)                            formula (4)
+// with alpha_i = alpha / n and beta_i = (1 - alpha) / n, so that sum (alpha_i + beta_i) = 1 as the paper
+// requires (alpha = 1/2 gives the alpha_i = beta_i = 1/(2n)).
+//
+// Decisions beyond the paper (which assumes closed meshes):
+// - Hole faces are treated as faces (their CCV is their centroid unless set), and the shrunken copy of a hole
+//   is flagged as a hole again, as in `honeycomb`. The boundary rule of the paper's section 4.2 is not
+//   implemented: the boundary behaves as if the hole were capped by a face.
+// - Point spheres are copied through unchanged, without a CCV.
+
+#include <optional>
+#include <vector>
+
+#include <dlfl/mesh.h>
+
+namespace dlfl {
+
+/// The weights of formulas (2), (3) and (4). Every weight must lie in [0, 1].
+struct ZhangWangParams {
+  /// a_n of formula (3). Unset: the paper's symmetric choice a_n = (4 - cos(2 pi / n)) / 9.
+  std::optional<double> a;
+  /// b_n of formula (2); the default 2/3 makes p'_i the centroid of the triangle (q, p_i, p_{i+1}).
+  double b = 2.0 / 3.0;
+  /// c_n of formula (4): 0 puts the new face's CCV on the old vertex, 1 on the average of its neighbourhood.
+  double c = 0.5;
+  /// The total weight of the neighbours p_i in formula (4) (n alpha_i); the CCVs q_i get 1 - alpha.
+  double alpha = 0.5;
+};
+
+/// a_n for a face of n vertices: `p.a` when set, else (4 - cos(2 pi / n)) / 9. Throws InvalidArgument for
+/// n < 2.
+double zhang_wang_a(const ZhangWangParams& p, int n);
+
+/// Throws InvalidArgument naming the parameter if a weight is outside [0, 1] (or NaN).
+void check_zhang_wang_params(const ZhangWangParams& p);
+
+/// Where the faces of a step came from, for tracking a face (and its CCV) across levels.
+struct HoneycombOrigin {
+  /// By input face handle: the face's shrunken copy (invalid for removed faces and point spheres).
+  std::vector<FaceId> face_of_face;
+  /// By input vertex handle: the new face around the vertex (a point sphere's: its copy's face).
+  std::vector<FaceId> face_of_vertex;
+};
+
+/// One step. The input is not modified. The result has the honeycomb's topology (V' = 2E, E' = 3E,
+/// F' = F + V, every new vertex 3-valent, each shrunken face of its old face's size, each vertex face of
+/// twice its old vertex's valence, the Euler characteristic and genus of every component kept), and every
+/// face of it (point spheres aside) carries its CCV. Handles are those of `honeycomb` on the same mesh.
+/// The shrunken copy of a face starts at the point for the face's first corner (the point on the edge leaving
+/// it). When `origin` is given it receives where each new face came from. Throws InvalidArgument for a bad
+/// parameter or a non-finite new point.
+Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p = {}, HoneycombOrigin* origin = nullptr);
+
+/// The limit of the centre of face f under repeated steps, formula (15): with q its CCV (or centroid),
+/// p_bar its centroid and n its size,
+///   (1 - b_n) / (1 + a_n - b_n) q + a_n / (1 + a_n - b_n) p_bar.
+/// (The face's shrunken copies depend on the face alone, so this is a property of the face.) Throws
+/// InvalidArgument for a removed face, a point sphere, bad parameters, or a_n = 0 with b_n = 1 (then q and
+/// p_bar never move, and there is no single limit).
+glm::dvec3 zhang_wang_limit_point(const Mesh& mesh, FaceId f, const ZhangWangParams& p = {});
+
+/// An open interval (lower, upper) of the tension a_n.
+struct TensionBounds {
+  double lower;
+  double upper;
+};
+
+/// The bounds of formula (12) as the paper prints them, for a face of n sides and a given b_n:
+///   cos(phi/2) / (1 + cos(phi/2)) b_n < a_n < cos(phi/2) / (1 - cos(phi/2)) b_n,   phi = 2 pi / n.
+/// See docs/zhang_wang.md: these differ from the bounds that formulas (9) and (10) imply, which
+/// `zhang_wang_eigen_bounds` gives. Throws InvalidArgument for n < 3 or b_n outside [0, 1].
+TensionBounds zhang_wang_paper_bounds(int n, double b);
+
+/// The bounds that make the eigenvalue (a_n - b_n)^2 of formula (9) smaller than the subdominant eigenvalue
+/// b_n^2 (1 + cos(2 pi / n)) / 2 = (b_n cos(phi/2))^2, as condition (10) asks:
+///   b_n (1 - cos(phi/2)) < a_n < b_n (1 + cos(phi/2)).
+/// Throws InvalidArgument for n < 3 or b_n outside [0, 1].
+TensionBounds zhang_wang_eigen_bounds(int n, double b);
+
+}  // namespace dlfl
