@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace dlfl {
 
@@ -25,6 +26,31 @@ class InvalidArgument : public Error {
 class TopologyError : public Error {
  public:
   using Error::Error;
+};
+
+/// A named parameter of an operation or scheme is unknown, missing, of the wrong type or out of its range.
+/// `parameter()` is its name (for a nested value, a path such as "params.t").
+class ParameterError : public InvalidArgument {
+ public:
+  ParameterError(const std::string& message, std::string parameter)
+      : InvalidArgument(message), parameter_(std::move(parameter)) {}
+  const std::string& parameter() const { return parameter_; }
+
+ private:
+  std::string parameter_;
+};
+
+/// A name (of an operation, a scheme) that nothing is registered under. The message lists what is known and,
+/// when a known name is close, suggests it ("did you mean 'honeycomb'?"); `suggestion()` is that name or
+/// empty.
+class UnknownNameError : public InvalidArgument {
+ public:
+  UnknownNameError(const std::string& message, std::string suggestion)
+      : InvalidArgument(message), suggestion_(std::move(suggestion)) {}
+  const std::string& suggestion() const { return suggestion_; }
+
+ private:
+  std::string suggestion_;
 };
 
 /// Reading or writing a file failed, or its content is malformed. `file()` and `line()` locate the problem

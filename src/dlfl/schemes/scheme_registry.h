@@ -1,0 +1,51 @@
+#pragma once
+// Schemes by name. Each scheme declares itself once, next to its implementation (a `SchemeSpec` with its
+// parameters); generic code checks parameters, fills in defaults and refuses bad values before any work. The
+// editor, the operation log and `dlfl subdivide` / `dlfl schemes` all read this table.
+
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <dlfl/mesh.h>
+#include <dlfl/parameters.h>
+#include <dlfl/schemes/origins.h>
+
+namespace dlfl {
+
+/// The declaration of one scheme.
+struct SchemeSpec {
+  std::string name;
+  /// One line for listings.
+  std::string doc;
+  std::vector<ParamSpec> params;
+  /// Checks that involve several parameters, run on the resolved set after the generic checks; it may also
+  /// drop defaults that do not apply (honeycomb: a constant `a` replaces a0/a1). `given` is what the caller
+  /// passed. Optional.
+  std::function<void(const Params& given, Params& resolved)> check;
+  /// One step on `mesh` with resolved parameters. Fills `origins` when it is not null.
+  std::function<Mesh(const Mesh& mesh, const Params& params, Origins* origins)> apply;
+};
+
+/// Every registered scheme, sorted by name.
+std::span<const SchemeSpec> schemes();
+
+/// Names of the registered schemes, sorted.
+std::vector<std::string> scheme_names();
+
+/// The scheme called `name`. Throws UnknownNameError (with a "did you mean" suggestion) otherwise.
+const SchemeSpec& find_scheme(std::string_view name);
+
+/// The full parameter set for a scheme: every given value checked (known name, type, range), every default
+/// filled in, the scheme's own cross-checks run. Logging the result records all parameters. Throws
+/// UnknownNameError for an unknown scheme and ParameterError naming the parameter.
+Params resolve_scheme_params(std::string_view scheme, const Params& given);
+
+/// One step of the named scheme. `params` are resolved first (so a partial set is fine). The input is not
+/// modified. Fills `origins` when it is not null.
+Mesh apply_scheme(const Mesh& mesh, std::string_view scheme, const Params& params = {},
+                  Origins* origins = nullptr);
+
+}  // namespace dlfl
