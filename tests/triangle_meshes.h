@@ -20,6 +20,7 @@
 #include <dlfl/history/oplog.h>
 #include "scheme_meshes.h"
 #include <dlfl/schemes/registry.h>
+#include "log_helpers.h"
 #include "test_meshes.h"
 
 namespace dlfl::test {
@@ -218,7 +219,7 @@ inline void check_editor_and_log(const Mesh& in, const std::string& scheme, cons
   CHECK(ed.mesh() == in);
   CHECK(ed.redo());
   CHECK(ed.mesh() == expected);
-  CHECK(replay_log(ed.log()).mesh() == expected);
+  CHECK(replay_log(log_text(ed)).mesh() == expected);
   Editor bad;
   bad.set_mesh(refused);
   CHECK_THROWS_AS(bad.subdivide(scheme, params), Error);

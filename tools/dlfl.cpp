@@ -7,6 +7,7 @@
 #include <new>
 
 #include "commands.h"
+#include <dlfl/errors.h>
 
 int main(int argc, char** argv) {
   using namespace dlfl::tool;
@@ -22,6 +23,8 @@ int main(int argc, char** argv) {
   add(add_convert);
   add(add_subdivide);
   add(add_replay);
+  add(add_ops);
+  add(add_edit);
 
   try {
     app.parse(argc, argv);
@@ -37,6 +40,13 @@ int main(int argc, char** argv) {
   }
   try {
     for (const CLI::App* sub : app.get_subcommands()) return actions.at(sub)();
+  } catch (const dlfl::UnknownNameError& e) {
+    // An unknown operation, scheme or parameter, or a malformed value: the command line is at fault.
+    std::cerr << "error: " << e.what() << "\n";
+    return usage;
+  } catch (const dlfl::ParameterError& e) {
+    std::cerr << "error: " << e.what() << "\n";
+    return usage;
   } catch (const std::bad_alloc&) {
     std::cerr << "error: out of memory (the result is too large for this machine; try fewer iterations)\n";
     return failure;

@@ -11,6 +11,7 @@
 #include <dlfl/cells/cell_io.h>
 #include <dlfl/io/mesh_io.h>
 #include <dlfl/history/oplog.h>
+#include <dlfl/schemes/scheme_registry.h>
 
 namespace dlfl::tool {
 
@@ -68,16 +69,16 @@ Action add_subdivide(CLI::App& app) {
   cmd->add_flag("--ascii", a->ascii, "Write PLY or VTK as ASCII instead of binary");
   return [a] {
     if (is_cell_complex_file(a->in)) return subdivide_cells(*a);
-    SchemeParams params;
+    Params params;
     for (const auto& p : a->params) {
-      auto [name, value] = parse_param(p);
-      if (params.count(name)) throw InvalidArgument("parameter " + name + " given twice");
+      auto [name, value] = parse_assignment(p);
+      if (params.has(name)) throw ParameterError("parameter " + name + " given twice", name);
       params[name] = value;
     }
     Editor::Options options;
     options.embed_meshes = a->self_contained;
     Editor editor(options);
-    editor.load(a->in);
+    editor.set_mesh(read_mesh(a->in), a->in);
     editor.subdivide(a->scheme, params, a->iterations);
     WriteOptions write;
     write.binary_ply = !a->ascii;

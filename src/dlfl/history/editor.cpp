@@ -1,184 +1,200 @@
 #include <dlfl/history/editor.h>
 
-#include <cmath>
+#include <algorithm>
 
 #include <dlfl/errors.h>
-#include <dlfl/io/json_mesh.h>
-#include <dlfl/io/mesh_io.h>
+#include <dlfl/operations/operation.h>
 
 namespace dlfl {
-namespace {
-nlohmann::json point(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
 
-nlohmann::json params_json(const SchemeParams& params) {
-  nlohmann::json j = nlohmann::json::object();
-  for (const auto& [name, value] : params) {
-    if (const double* d = std::get_if<double>(&value)) {
-      j[name] = *d;
-    } else {
-      j[name] = std::get<std::string>(value);
-    }
+void Editor::require_no_group(const char* what) const {
+  if (!groups_.empty()) {
+    throw InvalidArgument(std::string(what) + ": not allowed inside the open group '" + groups_.back().label +
+                          "' (end_group first)");
   }
-  return j;
 }
-}  // namespace
 
-void Editor::push(Entry entry, nlohmann::json op) {
+void Editor::push(Entry entry) {
   undo_.push_back(std::move(entry));
   if (options_.undo_limit != 0 && undo_.size() > options_.undo_limit) undo_.pop_front();
-  redo_.clear();
-  ops_.push_back(std::move(op));
 }
 
-Step Editor::run(const Step& step, nlohmann::json op) {
-  Step inverse = mesh_.apply(step);  // throws with the mesh unchanged
-  push(Entry{{inverse}, std::nullopt}, std::move(op));
-  return inverse;
+void Editor::record(std::string label, Part part) {
+  redo_.clear();
+  if (!groups_.empty()) {
+    Entry& group = groups_.front().entry;  // inner groups merge into the outermost one
+    ++group.operations;
+    // Consecutive edit records merge, so a group of many small operations stays one record.
+    if (auto* later = std::get_if<ChangeRecord>(&part);
+        later && !group.parts.empty() && std::holds_alternative<ChangeRecord>(group.parts.back())) {
+      std::get<ChangeRecord>(group.parts.back()).append(std::move(*later));
+    } else {
+      group.parts.push_back(std::move(part));
+    }
+    return;
+  }
+  Entry entry{std::move(label), 1, {}};
+  entry.parts.push_back(std::move(part));
+  push(std::move(entry));
 }
 
 void Editor::flip(Mesh& mesh, Entry& entry) {
-  if (entry.mesh) {
-    std::swap(mesh, *entry.mesh);
-    return;
+  // Parts are undone last to first; reversing their order afterwards makes the entry's opposite.
+  for (auto it = entry.parts.rbegin(); it != entry.parts.rend(); ++it) {
+    if (auto* other = std::get_if<Mesh>(&*it)) {
+      std::swap(mesh, *other);
+    } else {
+      std::get<ChangeRecord>(*it).revert(mesh);
+    }
   }
-  // Apply back to front; the steps returned, in the order applied, are the entry's opposite.
-  std::vector<Step> opposite;
-  opposite.reserve(entry.steps.size());
-  for (auto it = entry.steps.rbegin(); it != entry.steps.rend(); ++it) opposite.push_back(mesh.apply(*it));
-  entry.steps = std::move(opposite);
+  std::reverse(entry.parts.begin(), entry.parts.end());
+}
+
+Params Editor::apply(std::string_view name, const Params& params) {
+  const OperationSpec& op = find_operation(name);
+  if (op.kind == OperationSpec::Kind::history) {
+    const Params full = resolve_params(op.name, op.params, params);
+    if (op.name == "undo") {
+      if (!undo()) throw InvalidArgument("undo: there is nothing to undo");
+    } else if (op.name == "redo") {
+      if (!redo()) throw InvalidArgument("redo: there is nothing to redo");
+    } else if (op.name == "begin_group") {
+      begin_group(full.text("label"));
+    } else if (op.name == "end_group") {
+      end_group();
+    } else if (op.name == "clear_history") {
+      clear_history();
+    } else {
+      throw InvalidArgument(op.name + ": the editor does not know this history operation");
+    }
+    return {};
+  }
+  Params full = resolve_operation_params(op, params, mesh_);
+  Params outputs;
+  if (op.kind == OperationSpec::Kind::edit) {
+    Transaction tx(mesh_);
+    outputs = op.edit(tx, full);  // on a throw, the transaction puts the mesh back
+    record(op.name, tx.commit());
+  } else {
+    Mesh next = op.replace(mesh_, full);
+    std::swap(mesh_, next);
+    record(op.name, std::move(next));
+  }
+  log_.push_back({op.name, std::move(full)});
+  return outputs;
+}
+
+void Editor::set_mesh(Mesh mesh, const std::optional<std::filesystem::path>& source) {
+  Params params;
+  if (source) {
+    params["path"] = std::filesystem::absolute(*source).lexically_normal().string();
+    if (options_.embed_meshes) params["mesh"] = std::make_shared<const Mesh>(mesh);
+    log_.push_back({"load", std::move(params)});
+  } else {
+    params["mesh"] = std::make_shared<const Mesh>(mesh);
+    log_.push_back({"mesh", std::move(params)});
+  }
+  std::swap(mesh_, mesh);
+  record(log_.back().name, std::move(mesh));
+}
+
+void Editor::subdivide(std::string_view scheme, const Params& params, int iterations) {
+  apply("subdivide", {{"scheme", std::string(scheme)}, {"iterations", iterations}, {"params", params}});
+}
+
+VertexId Editor::create_vertex(const glm::dvec3& position) {
+  return apply("create_vertex", {{"position", position}}).handle<VertexId>("vertex");
+}
+
+void Editor::delete_vertex(VertexId v) { apply("delete_vertex", {{"vertex", v}}); }
+
+namespace {
+template <class H>
+H output(const Params& out, const char* name) {
+  return out.has(name) ? out.handle<H>(name) : H();
+}
+}  // namespace
+
+InsertEdgeResult Editor::insert_edge(CornerId c1, CornerId c2) {
+  const Params out = apply("insert_edge", {{"corner1", c1}, {"corner2", c2}});
+  return {output<EdgeId>(out, "edge"), output<FaceId>(out, "created_face"),
+          output<FaceId>(out, "removed_face"), Step{}};
+}
+
+DeleteEdgeResult Editor::delete_edge(EdgeId e) {
+  const Params out = apply("delete_edge", {{"edge", e}});
+  return {output<FaceId>(out, "created_face"), output<FaceId>(out, "removed_face"), Step{}};
+}
+
+VertexId Editor::subdivide_edge(EdgeId e, const glm::dvec3& position) {
+  return apply("subdivide_edge", {{"edge", e}, {"position", position}}).handle<VertexId>("vertex");
+}
+
+void Editor::unsubdivide_edge(VertexId v) { apply("unsubdivide_edge", {{"vertex", v}}); }
+
+void Editor::set_position(VertexId v, const glm::dvec3& position) {
+  apply("set_position", {{"vertex", v}, {"position", position}});
+}
+
+FaceManifold Editor::create_face_manifold(std::span<const glm::dvec3> positions) {
+  const Params out = apply("create_face_manifold",
+                           {{"positions", std::vector<glm::dvec3>(positions.begin(), positions.end())}});
+  return {out.handle<FaceId>("front"), out.handle<FaceId>("back")};
+}
+
+void Editor::begin_group(std::string label) {
+  groups_.push_back({label, Entry{std::move(label), 0, {}}});
+  log_.push_back({"begin_group", {{"label", groups_.back().label}}});
+}
+
+void Editor::end_group() {
+  if (groups_.empty()) throw InvalidArgument("end_group: no group is open");
+  OpenGroup group = std::move(groups_.back());
+  groups_.pop_back();
+  log_.push_back({"end_group", {}});
+  if (!groups_.empty()) return;  // an inner group: its operations are already in the outer one
+  if (!group.entry.parts.empty()) push(std::move(group.entry));
 }
 
 bool Editor::undo() {
+  require_no_group("undo");
   if (undo_.empty()) return false;
   Entry entry = std::move(undo_.back());
   undo_.pop_back();
   flip(mesh_, entry);
   redo_.push_back(std::move(entry));
-  ops_.push_back({{"op", "undo"}});
+  log_.push_back({"undo", {}});
   return true;
 }
 
 bool Editor::redo() {
+  require_no_group("redo");
   if (redo_.empty()) return false;
   Entry entry = std::move(redo_.back());
   redo_.pop_back();
   flip(mesh_, entry);
-  undo_.push_back(std::move(entry));
-  if (options_.undo_limit != 0 && undo_.size() > options_.undo_limit) undo_.pop_front();
-  ops_.push_back({{"op", "redo"}});
+  push(std::move(entry));
+  log_.push_back({"redo", {}});
   return true;
 }
 
-void Editor::load(const std::filesystem::path& path) {
-  Mesh loaded = read_mesh(path);
-  nlohmann::json op = {{"op", "load"}, {"path", std::filesystem::absolute(path).lexically_normal().string()}};
-  if (options_.embed_meshes) op["mesh"] = mesh_to_json(loaded);
-  std::swap(mesh_, loaded);
-  push(Entry{{}, std::move(loaded)}, std::move(op));
+std::vector<Editor::HistoryEntry> Editor::undo_history() const {
+  std::vector<HistoryEntry> out;
+  for (const auto& e : undo_) out.push_back({e.label, e.operations});
+  return out;
 }
 
-void Editor::set_mesh(Mesh mesh) {
-  nlohmann::json op = {{"op", "mesh"}, {"mesh", mesh_to_json(mesh)}};
-  std::swap(mesh_, mesh);
-  push(Entry{{}, std::move(mesh)}, std::move(op));
+std::vector<Editor::HistoryEntry> Editor::redo_history() const {
+  std::vector<HistoryEntry> out;
+  for (const auto& e : redo_) out.push_back({e.label, e.operations});
+  return out;
 }
 
-void Editor::subdivide(const std::string& scheme, const SchemeParams& params, int iterations) {
-  if (iterations < 0)
-    throw InvalidArgument("subdivide: iterations must be >= 0, got " + std::to_string(iterations));
-  const SchemeParams full = resolve_scheme_params(scheme, params);
-  // Each iteration reads the previous mesh and builds a new one; M_n itself is never copied or touched.
-  Mesh next = iterations == 0 ? mesh_ : apply_scheme(mesh_, scheme, full);
-  for (int i = 1; i < iterations; ++i) next = apply_scheme(next, scheme, full);
-  nlohmann::json op = {
-      {"op", "subdivide"}, {"scheme", scheme}, {"iterations", iterations}, {"params", params_json(full)}};
-  std::swap(mesh_, next);
-  push(Entry{{}, std::move(next)}, std::move(op));
-}
-
-VertexId Editor::create_vertex(const glm::dvec3& position) {
-  Step s{Step::Kind::create_vertex};
-  s.position = position;
-  return run(s, {{"op", "create_vertex"}, {"position", point(position)}}).vertex;
-}
-
-void Editor::delete_vertex(VertexId v) {
-  Step s{Step::Kind::delete_vertex};
-  s.vertex = v;
-  run(s, {{"op", "delete_vertex"}, {"vertex", v.index()}});
-}
-
-InsertEdgeResult Editor::insert_edge(CornerId c1, CornerId c2) {
-  InsertEdgeResult r = mesh_.insert_edge(c1, c2);
-  push(Entry{{r.inverse}, std::nullopt},
-       {{"op", "insert_edge"}, {"corner1", c1.index()}, {"corner2", c2.index()}});
-  return r;
-}
-
-DeleteEdgeResult Editor::delete_edge(EdgeId e) {
-  DeleteEdgeResult r = mesh_.delete_edge(e);
-  push(Entry{{r.inverse}, std::nullopt}, {{"op", "delete_edge"}, {"edge", e.index()}});
-  return r;
-}
-
-VertexId Editor::subdivide_edge(EdgeId e, const glm::dvec3& position) {
-  Step s{Step::Kind::subdivide_edge};
-  s.edge = e;
-  s.position = position;
-  return run(s, {{"op", "subdivide_edge"}, {"edge", e.index()}, {"position", point(position)}}).vertex;
-}
-
-void Editor::unsubdivide_edge(VertexId v) {
-  Step s{Step::Kind::unsubdivide_edge};
-  s.vertex = v;
-  run(s, {{"op", "unsubdivide_edge"}, {"vertex", v.index()}});
-}
-
-void Editor::set_position(VertexId v, const glm::dvec3& position) {
-  Step s{Step::Kind::set_position};
-  s.vertex = v;
-  s.position = position;
-  run(s, {{"op", "set_position"}, {"vertex", v.index()}, {"position", point(position)}});
-}
-
-void Editor::set_face_point(FaceId f, const std::optional<glm::dvec3>& control) {
-  Step s{Step::Kind::set_face_point};
-  s.face = f;
-  s.position = control ? *control : glm::dvec3(std::nan(""), 0.0, 0.0);  // a NaN x clears
-  run(s, {{"op", "set_face_point"},
-          {"face", f.index()},
-          {"position", control ? point(*control) : nlohmann::json()}});
-}
-
-FaceManifold Editor::create_face_manifold(std::span<const glm::dvec3> positions, std::span<VertexId> vertices,
-                                          std::span<CornerId> front_corners,
-                                          std::span<CornerId> back_corners) {
-  // create_face_manifold checks all its input before it changes anything, so it runs on the mesh itself; the
-  // entry records the inverse of each primitive (the N edges deleted in reverse, then the N point spheres).
-  const std::uint32_t first_vertex = mesh_.vertex_capacity();
-  const std::uint32_t first_edge = mesh_.edge_capacity();
-  FaceManifold fm = dlfl::create_face_manifold(mesh_, positions, vertices, front_corners, back_corners);
-  Entry entry;
-  const auto n = static_cast<std::uint32_t>(positions.size());
-  // The entry's steps run back to front on undo: vertices' deletions first in the list, edges' after them.
-  for (std::uint32_t i = 0; i < n; ++i) {
-    Step s{Step::Kind::delete_vertex};
-    s.vertex = VertexId(first_vertex + i);
-    entry.steps.push_back(s);
-  }
-  for (std::uint32_t i = 0; i < n; ++i) {
-    Step s{Step::Kind::delete_edge};
-    s.edge = EdgeId(first_edge + i);
-    entry.steps.push_back(s);
-  }
-  nlohmann::json pts = nlohmann::json::array();
-  for (const auto& p : positions) pts.push_back(point(p));
-  push(std::move(entry), {{"op", "create_face_manifold"}, {"positions", std::move(pts)}});
-  return fm;
-}
-
-nlohmann::json Editor::log() const {
-  return {{"format", "dlfl-oplog"}, {"version", 1}, {"undo_limit", options_.undo_limit}, {"ops", ops_}};
+void Editor::clear_history() {
+  require_no_group("clear_history");
+  undo_.clear();
+  redo_.clear();
+  log_.push_back({"clear_history", {}});
 }
 
 }  // namespace dlfl

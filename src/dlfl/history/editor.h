@@ -1,33 +1,49 @@
 #pragma once
-// The editor: one mesh, an undo/redo history, and a log of everything done to it.
+// The editor: one mesh, an undo/redo history, and a record of everything done to it (the operation log).
 //
-// Every Euler operator applied through the editor is undone by its exact inverse (same handles, bit-identical
-// positions). Applying a scheme, loading or setting a mesh keeps the previous mesh M_n whole, so undoing it
-// is O(1) and gives back exactly M_n; redo gives back M_{n+1}. Fine-grained steps and whole-mesh steps
-// interleave freely.
+// Any registered operation (dlfl/operations/operation.h) is applied by name as one undo entry. Edit
+// operations are undone by the exact inverses their transaction recorded (same handles, bit-identical
+// positions). Loading, setting a mesh and subdivision keep the previous mesh M_n whole, so undoing them is
+// O(1) and gives back exactly M_n; redo gives back M_{n+1}. Groups make several operations one entry.
 
 #include <cstddef>
 #include <deque>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <span>
 #include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 #include <dlfl/create_face_manifold.h>
 #include <dlfl/mesh.h>
-#include <dlfl/schemes/registry.h>
+#include <dlfl/operations/transaction.h>
+#include <dlfl/parameters.h>
 
 namespace dlfl {
+
+/// One operation as the log records it: its name and its full parameter set (defaults included).
+struct LoggedOperation {
+  std::string name;
+  Params params;
+};
 
 class Editor {
  public:
   struct Options {
-    /// Put the mesh itself (native JSON) into the log's load ops, making the log self-contained.
+    /// Keep the loaded mesh itself in the log's load operations, making the log self-contained.
     bool embed_meshes = false;
-    /// Most undoable entries kept; the oldest are dropped first. 0 keeps everything.
+    /// Most undo entries kept; the oldest are dropped first. 0 keeps everything.
     std::size_t undo_limit = 0;
+  };
+
+  /// One entry of the history, as `undo_history` and `redo_history` report it.
+  struct HistoryEntry {
+    /// The operation's name, or the group's label.
+    std::string label;
+    /// Operations in the entry (1 unless it is a group).
+    std::size_t operations = 0;
   };
 
   Editor() = default;
@@ -37,71 +53,99 @@ class Editor {
   const Mesh& mesh() const { return mesh_; }
   const Options& options() const { return options_; }
 
+  // ---- any registered operation
+  // ----------------------------------------------------------------------------------------
+
+  /// Applies the operation called `name` with `params` (defaults filled in, everything checked before the
+  /// mesh changes) as one undo entry, or as part of the open group. Returns the operation's outputs (the
+  /// handles it made, by name). History operations (undo, redo, begin_group, end_group, clear_history) are
+  /// carried out as the functions of the same name; `undo` and `redo` with nothing to do throw
+  /// InvalidArgument here. On any error the mesh, the history and the log are unchanged.
+  Params apply(std::string_view name, const Params& params = {});
+
   // ---- whole-mesh operations (undo swaps meshes: O(1))
-  // -------------------------------------------------------
+  // ---------------------------------------------------------
 
-  /// Reads a mesh file (any format `read_mesh` knows) and makes it the current mesh. Logged with its absolute
-  /// path, plus the mesh itself when `embed_meshes` is set.
-  void load(const std::filesystem::path& path);
-  /// Makes `mesh` the current mesh. Logged with the mesh inline.
-  void set_mesh(Mesh mesh);
-  /// Applies a scheme `iterations` times (one undo entry for all of them). Parameters are resolved with their
-  /// defaults and logged in full. The current mesh changes only if every iteration succeeds.
-  void subdivide(const std::string& scheme, const SchemeParams& params = {}, int iterations = 1);
+  /// Makes `mesh` the current mesh. With a `source` path it is logged as `load` of that path (and, with
+  /// `embed_meshes`, the mesh itself); without one, as `mesh` with the mesh inline.
+  void set_mesh(Mesh mesh, const std::optional<std::filesystem::path>& source = std::nullopt);
+  /// Applies a scheme `iterations` times (one undo entry for all of them). Parameters are resolved with
+  /// their defaults and logged in full. The current mesh changes only if every iteration succeeds.
+  void subdivide(std::string_view scheme, const Params& params = {}, int iterations = 1);
 
-  // ---- Euler operators (undo applies the exact inverse)
-  // -------------------------------------------------------
+  // ---- the Euler operators, typed (each is `apply` of the operation of the same name)
+  // --------------------------
 
   VertexId create_vertex(const glm::dvec3& position);
   void delete_vertex(VertexId v);
+  /// The result's `inverse` is left empty: the editor keeps the undo record itself.
   InsertEdgeResult insert_edge(CornerId c1, CornerId c2);
+  /// The result's `inverse` is left empty: the editor keeps the undo record itself.
   DeleteEdgeResult delete_edge(EdgeId e);
   VertexId subdivide_edge(EdgeId e, const glm::dvec3& position);
   void unsubdivide_edge(VertexId v);
   void set_position(VertexId v, const glm::dvec3& position);
-  /// Sets a face's control point (the central control vertex of the Zhang-Wang honeycomb scheme), or clears
-  /// it with `std::nullopt`, as one undoable entry. Throws InvalidArgument for a removed face or a non-finite
-  /// point.
-  void set_face_point(FaceId f, const std::optional<glm::dvec3>& point);
-  /// CREATEFACEMANIFOLD as one undoable entry; `vertices`, `front_corners`, `back_corners` as in the free
-  /// function.
-  FaceManifold create_face_manifold(std::span<const glm::dvec3> positions, std::span<VertexId> vertices = {},
-                                    std::span<CornerId> front_corners = {},
-                                    std::span<CornerId> back_corners = {});
+  /// CREATEFACEMANIFOLD as one undoable entry.
+  FaceManifold create_face_manifold(std::span<const glm::dvec3> positions);
 
-  // ---- history
-  // ---------------------------------------------------------------------------------------------
+  // ---- groups and history
+  // ----------------------------------------------------------------------------------------------
 
-  /// Undoes the latest entry; returns false (and logs nothing) if there is none.
+  /// Starts a group: every operation until the matching `end_group` becomes one undo entry labelled `label`.
+  /// Groups nest; the outermost one makes the entry.
+  void begin_group(std::string label);
+  /// Ends the group begun last. An empty group adds no entry. Throws InvalidArgument if none is open.
+  void end_group();
+  /// Number of groups open.
+  std::size_t group_depth() const { return groups_.size(); }
+
+  /// Undoes the latest entry; returns false (and logs nothing) if there is none. Throws InvalidArgument
+  /// while a group is open.
   bool undo();
   /// Redoes the latest undone entry; returns false (and logs nothing) if there is none. Any new operation
-  /// clears the redo list.
+  /// clears the redo list. Throws InvalidArgument while a group is open.
   bool redo();
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
+  /// The entries that `undo` would undo, oldest first (the last is undone first).
+  std::vector<HistoryEntry> undo_history() const;
+  /// The entries that `redo` would redo, the next to redo last.
+  std::vector<HistoryEntry> redo_history() const;
+  /// Forgets every undo and redo entry (the mesh and the log stay). Throws InvalidArgument while a group is
+  /// open.
+  void clear_history();
 
   // ---- the operation log
-  // -------------------------------------------------------------------------------------
+  // ------------------------------------------------------------------------------------------------
 
-  /// The session so far as a versioned document: {"format": "dlfl-oplog", "version": 1, "undo_limit": N,
-  /// "ops": [...]} (see docs/oplog.md). Replaying it gives a mesh equal to `mesh()`.
-  nlohmann::json log() const;
+  /// Everything applied so far, in order, undo and redo included; replaying it (dlfl/history/oplog.h) gives a
+  /// mesh equal to `mesh()`.
+  const std::vector<LoggedOperation>& log() const { return log_; }
 
  private:
-  // One undoable entry: Euler steps to apply back to front, or a whole mesh to swap with the current one.
+  // A part of an undo entry: the inverses of an edit operation, or the other mesh of a swap.
+  using Part = std::variant<ChangeRecord, Mesh>;
   struct Entry {
-    std::vector<Step> steps;
-    std::optional<Mesh> mesh;
+    std::string label;
+    std::size_t operations = 0;
+    std::vector<Part> parts;
   };
-  void push(Entry entry, nlohmann::json op);
-  Step run(const Step& step, nlohmann::json op);  // applies one operator as its own entry
-  static void flip(Mesh& mesh, Entry& entry);     // undo or redo an entry, turning it into its opposite
+  struct OpenGroup {
+    std::string label;
+    Entry entry;
+  };
+
+  void record(std::string label, Part part);  // adds a part as its own entry or to the open group
+  void push(Entry entry);                     // onto the undo list, trimmed to the undo limit
+  void require_no_group(const char* what) const;
+  static void flip(Mesh& mesh, Entry& entry);  // undo or redo an entry, turning it into its opposite
 
   Options options_;
   Mesh mesh_;
   std::deque<Entry> undo_;
   std::vector<Entry> redo_;
-  nlohmann::json ops_ = nlohmann::json::array();
+  std::vector<OpenGroup> groups_;
+  std::vector<LoggedOperation> log_;
 };
 
 }  // namespace dlfl

@@ -1,154 +1,185 @@
 #include <dlfl/history/oplog.h>
 
-#include <fstream>
-#include <sstream>
+#include <nlohmann/json.hpp>
 
 #include <dlfl/io/atomic_file.h>
+#include <dlfl/io/detail/text_io.h>
 #include <dlfl/io/json_mesh.h>
+#include <dlfl/operations/operation.h>
 
 namespace dlfl {
 namespace {
+
+using nlohmann::json;
 
 std::string where(std::size_t op, const std::string& field) {
   if (op == LogError::npos) return "field '" + field + "'";
   return "op " + std::to_string(op) + ", field '" + field + "'";
 }
 
-// Typed access to one op's fields; every failure names the op index and the field.
-class OpReader {
+// ---- writing: a value by its kind ------------------------------------------------------------------------
+
+json point_json(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
+
+json value_json(const Value& v) {
+  switch (v.kind()) {
+    case Value::Kind::empty:
+      return nullptr;
+    case Value::Kind::boolean:
+      return v.as_bool();
+    case Value::Kind::integer:
+      return v.as_integer();
+    case Value::Kind::number:
+      return v.as_number();
+    case Value::Kind::text:
+      return v.as_text();
+    case Value::Kind::point:
+      return point_json(v.as_point());
+    case Value::Kind::integers:
+      return v.as_integers();
+    case Value::Kind::numbers:
+      return v.as_numbers();
+    case Value::Kind::points: {
+      json list = json::array();
+      for (const auto& p : v.as_points()) list.push_back(point_json(p));
+      return list;
+    }
+    case Value::Kind::mesh:
+      return mesh_to_json(v.as_mesh());
+    case Value::Kind::params: {
+      json object = json::object();
+      for (const auto& [name, value] : v.as_params()) object[name] = value_json(value);
+      return object;
+    }
+  }
+  return nullptr;
+}
+
+// ---- reading: a field by its declared type ----------------------------------------------------------------
+
+class FieldReader {
  public:
-  OpReader(const nlohmann::json& op, std::size_t index, const std::string& name, const Mesh& mesh)
-      : op_(op), index_(index), name_(name), mesh_(mesh) {}
+  FieldReader(const std::string& name, std::size_t op) : name_(name), op_(op) {}
 
   [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-    throw LogError(name_, index_, field, what);
+    throw LogError(name_, op_, field, what);
   }
 
-  const nlohmann::json& get(const char* field) const {
-    auto it = op_.find(field);
-    if (it == op_.end()) fail(field, "missing");
-    return *it;
-  }
-
-  std::string text(const char* field) const {
-    const auto& v = get(field);
-    if (!v.is_string()) fail(field, "expected a string");
-    return v.get<std::string>();
-  }
-
-  long long integer(const char* field) const {
-    const auto& v = get(field);
-    if (!v.is_number_integer()) fail(field, "expected an integer");
-    return v.get<long long>();
-  }
-
-  glm::dvec3 point(const nlohmann::json& v, const std::string& field) const {
-    if (!v.is_array() || v.size() != 3 || !v[0].is_number() || !v[1].is_number() || !v[2].is_number()) {
-      fail(field, "expected [x, y, z]");
+  // Any JSON value as the closest Value; the declaration decides later what it may be.
+  Value generic(const json& j, const std::string& field) const {
+    if (j.is_boolean()) return j.get<bool>();
+    if (j.is_number_integer()) {
+      if (j.is_number_unsigned() && j.get<std::uint64_t>() > std::uint64_t(INT64_MAX)) {
+        fail(field, "integer out of range");
+      }
+      return j.get<std::int64_t>();
     }
-    return {v[0].get<double>(), v[1].get<double>(), v[2].get<double>()};
-  }
-  glm::dvec3 point(const char* field) const { return point(get(field), field); }
-
-  // A handle that must name a live element of the current mesh.
-  template <class H>
-  H handle(const char* field, const char* kind) const {
-    const auto& v = get(field);
-    // Integers written by hand in C++ are signed in nlohmann::json; parsed ones are unsigned: accept both.
-    if (!v.is_number_integer() || v.get<long long>() < 0 || v.get<long long>() >= H::invalid_index) {
-      fail(field, std::string("expected a ") + kind + " handle");
+    if (j.is_number()) return j.get<double>();
+    if (j.is_string()) return j.get<std::string>();
+    if (j.is_object()) return params(j, field + ".");
+    if (j.is_array()) {
+      bool integers = true;
+      bool numbers = true;
+      bool points = !j.empty();
+      for (const auto& e : j) {
+        integers = integers && e.is_number_integer();
+        numbers = numbers && e.is_number();
+        points = points && e.is_array() && e.size() == 3 && e[0].is_number() && e[1].is_number() &&
+                 e[2].is_number();
+      }
+      if (integers) {
+        std::vector<std::int64_t> out;
+        for (const auto& e : j) out.push_back(e.get<std::int64_t>());
+        return out;
+      }
+      if (numbers) return j.get<std::vector<double>>();
+      if (points) {
+        std::vector<glm::dvec3> out;
+        for (const auto& e : j) out.emplace_back(e[0].get<double>(), e[1].get<double>(), e[2].get<double>());
+        return out;
+      }
+      fail(field, "expected a list of numbers or of [x, y, z]");
     }
-    H h(static_cast<std::uint32_t>(v.get<long long>()));
-    if (!mesh_.is_alive(h))
-      fail(field, std::string(kind) + " " + to_string(h) + " does not exist at this point");
-    return h;
+    fail(field, "expected a value, not " + j.dump());
+  }
+
+  Params params(const json& j, const std::string& prefix) const {
+    Params out;
+    for (const auto& [key, value] : j.items()) out[key] = generic(value, prefix + key);
+    return out;
+  }
+
+  Value typed(const json& j, const ParamSpec& spec) const {
+    switch (spec.type) {
+      case ParamType::mesh:
+        if (!j.is_object()) fail(spec.name, "expected a native mesh object");
+        try {
+          return std::make_shared<const Mesh>(mesh_from_json(j, name_ + " op " + std::to_string(op_)));
+        } catch (const IoError& e) {
+          fail(spec.name, e.what());
+        }
+      case ParamType::params:
+        if (!j.is_object()) fail(spec.name, "expected an object");
+        return params(j, spec.name + ".");
+      case ParamType::point:
+        if (j.is_array() && (j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())) {
+          fail(spec.name, "expected [x, y, z]");
+        }
+        return generic(j, spec.name);
+      case ParamType::points:
+        if (!j.is_array()) fail(spec.name, "expected a list of [x, y, z]");
+        for (std::size_t i = 0; i < j.size(); ++i) {
+          const auto& e = j[i];
+          if (!e.is_array() || e.size() != 3 || !e[0].is_number() || !e[1].is_number() || !e[2].is_number()) {
+            fail(spec.name + "[" + std::to_string(i) + "]", "expected [x, y, z]");
+          }
+        }
+        if (j.empty()) return std::vector<glm::dvec3>{};
+        return generic(j, spec.name);
+      default:
+        return generic(j, spec.name);
+    }
   }
 
  private:
-  const nlohmann::json& op_;
-  std::size_t index_;
   const std::string& name_;
-  const Mesh& mesh_;
+  std::size_t op_;
 };
 
-SchemeParams params_from(const OpReader& r) {
-  const auto& p = r.get("params");
-  if (!p.is_object()) r.fail("params", "expected an object");
-  SchemeParams params;
-  for (const auto& [key, value] : p.items()) {
-    if (value.is_number()) {
-      params[key] = value.get<double>();
-    } else if (value.is_string()) {
-      params[key] = value.get<std::string>();
-    } else {
-      r.fail("params." + key, "expected a number or a string");
-    }
-  }
-  return params;
-}
-
-void replay_op(Editor& editor, const nlohmann::json& op, std::size_t index, const std::string& name) {
-  if (!op.is_object()) throw LogError(name, index, "op", "expected an object");
-  OpReader r(op, index, name, editor.mesh());
-  const std::string kind = r.text("op");
+void replay_op(Editor& editor, const json& op, std::size_t index, const std::string& name) {
+  const FieldReader reader(name, index);
+  if (!op.is_object()) reader.fail("op", "expected an object");
+  auto kind = op.find("op");
+  if (kind == op.end() || !kind->is_string()) reader.fail("op", "missing or not a string");
+  const std::string op_name = kind->get<std::string>();
+  const OperationSpec* spec = nullptr;
   try {
-    if (kind == "load") {
-      if (op.contains("mesh")) {
-        editor.set_mesh(mesh_from_json(op["mesh"], name + " op " + std::to_string(index)));
-      } else {
-        editor.load(r.text("path"));
-      }
-    } else if (kind == "mesh") {
-      editor.set_mesh(mesh_from_json(r.get("mesh"), name + " op " + std::to_string(index)));
-    } else if (kind == "subdivide") {
-      const long long iterations = r.integer("iterations");
-      if (iterations < 0 || iterations > 64) r.fail("iterations", "expected 0 to 64");
-      editor.subdivide(r.text("scheme"), params_from(r), static_cast<int>(iterations));
-    } else if (kind == "create_vertex") {
-      editor.create_vertex(r.point("position"));
-    } else if (kind == "delete_vertex") {
-      editor.delete_vertex(r.handle<VertexId>("vertex", "vertex"));
-    } else if (kind == "insert_edge") {
-      const CornerId c1 = r.handle<CornerId>("corner1", "corner");  // in field order: arguments have none
-      const CornerId c2 = r.handle<CornerId>("corner2", "corner");
-      editor.insert_edge(c1, c2);
-    } else if (kind == "delete_edge") {
-      editor.delete_edge(r.handle<EdgeId>("edge", "edge"));
-    } else if (kind == "subdivide_edge") {
-      const EdgeId e = r.handle<EdgeId>("edge", "edge");
-      editor.subdivide_edge(e, r.point("position"));
-    } else if (kind == "unsubdivide_edge") {
-      editor.unsubdivide_edge(r.handle<VertexId>("vertex", "vertex"));
-    } else if (kind == "set_position") {
-      const VertexId v = r.handle<VertexId>("vertex", "vertex");
-      editor.set_position(v, r.point("position"));
-    } else if (kind == "set_face_point") {
-      const FaceId f = r.handle<FaceId>("face", "face");
-      if (r.get("position").is_null()) {
-        editor.set_face_point(f, std::nullopt);
-      } else {
-        editor.set_face_point(f, r.point("position"));
-      }
-    } else if (kind == "create_face_manifold") {
-      const auto& pts = r.get("positions");
-      if (!pts.is_array()) r.fail("positions", "expected an array of [x, y, z]");
-      std::vector<glm::dvec3> positions;
-      for (std::size_t i = 0; i < pts.size(); ++i) {
-        positions.push_back(r.point(pts[i], "positions[" + std::to_string(i) + "]"));
-      }
-      editor.create_face_manifold(positions);
-    } else if (kind == "undo") {
-      if (!editor.undo()) r.fail("op", "undo with nothing to undo");
-    } else if (kind == "redo") {
-      if (!editor.redo()) r.fail("op", "redo with nothing to redo");
-    } else {
-      r.fail("op", "unknown op '" + kind + "'");
+    spec = &find_operation(op_name);
+  } catch (const UnknownNameError& e) {
+    reader.fail("op", e.what());
+  }
+  Params given;
+  for (const auto& [field, value] : op.items()) {
+    if (field == "op") continue;
+    const ParamSpec* declared = nullptr;
+    for (const auto& p : spec->params) declared = p.name == field ? &p : declared;
+    if (!declared) {
+      given[field] = Value(true);  // refused by name below, with the known names
+      continue;
     }
-  } catch (const LogError&) {
-    throw;
+    if (value.is_null() && declared->is_optional) continue;  // null: not given (set_face_point clears)
+    given[field] = reader.typed(value, *declared);
+  }
+  try {
+    editor.apply(op_name, given);
+  } catch (const ParameterError& e) {
+    reader.fail(e.parameter(), e.what());
+  } catch (const IoError& e) {
+    // Only load reads files: a file that cannot be read is the path's fault.
+    reader.fail(op_name == "load" ? "path" : "op", e.what());
   } catch (const Error& e) {
-    // The operator itself refused (a self-loop, a bad parameter, an unreadable file): name the op.
-    throw LogError(name, index, "op", kind + ": " + e.what());
+    // The operation itself refused (a self-loop, a scheme that does not apply): name the op.
+    reader.fail("op", e.what());
   }
 }
 
@@ -157,7 +188,28 @@ void replay_op(Editor& editor, const nlohmann::json& op, std::size_t index, cons
 LogError::LogError(const std::string& name, std::size_t op, const std::string& field, const std::string& what)
     : IoError(where(op, field) + ": " + what, name), op_(op), field_(field) {}
 
-Editor replay_log(const nlohmann::json& log, const std::string& name) {
+std::string log_text(const Editor& editor) {
+  json ops = json::array();
+  for (const LoggedOperation& logged : editor.log()) {
+    json op = {{"op", logged.name}};
+    for (const auto& [field, value] : logged.params) op[field] = value_json(value);
+    ops.push_back(std::move(op));
+  }
+  const json doc = {{"format", "dlfl-oplog"},
+                    {"version", oplog_version},
+                    {"undo_limit", editor.options().undo_limit},
+                    {"ops", std::move(ops)}};
+  return doc.dump(1);
+}
+
+void write_log(const Editor& editor, const std::filesystem::path& path) {
+  const std::string text = log_text(editor);
+  write_atomically(path, [&](std::ostream& out) { out << text << '\n'; });
+}
+
+Editor replay_log(std::string_view text, const std::string& name) {
+  const json log = json::parse(text, nullptr, false);
+  if (log.is_discarded()) throw LogError(name, LogError::npos, "(document)", "not valid JSON");
   if (!log.is_object()) throw LogError(name, LogError::npos, "(document)", "expected a JSON object");
   auto format = log.find("format");
   if (format == log.end() || *format != "dlfl-oplog") {
@@ -167,9 +219,10 @@ Editor replay_log(const nlohmann::json& log, const std::string& name) {
   if (version == log.end() || !version->is_number_integer()) {
     throw LogError(name, LogError::npos, "version", "missing or not an integer");
   }
-  if (*version != 1) {
+  if (*version != 1 && *version != oplog_version) {
     throw LogError(name, LogError::npos, "version",
-                   "unsupported version " + version->dump() + " (this library reads version 1)");
+                   "unsupported version " + version->dump() + " (this library reads versions 1 and " +
+                       std::to_string(oplog_version) + ")");
   }
   Editor::Options options;
   if (auto limit = log.find("undo_limit"); limit != log.end()) {
@@ -179,26 +232,17 @@ Editor replay_log(const nlohmann::json& log, const std::string& name) {
     options.undo_limit = static_cast<std::size_t>(limit->get<long long>());
   }
   auto ops = log.find("ops");
-  if (ops == log.end() || !ops->is_array())
+  if (ops == log.end() || !ops->is_array()) {
     throw LogError(name, LogError::npos, "ops", "missing or not an array");
+  }
   Editor editor(options);
   for (std::size_t i = 0; i < ops->size(); ++i) replay_op(editor, (*ops)[i], i, name);
   return editor;
 }
 
 Editor replay_log_file(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw IoError("cannot open", path.string());
-  std::stringstream buffer;
-  buffer << in.rdbuf();
-  nlohmann::json doc = nlohmann::json::parse(buffer.str(), nullptr, false);
-  if (doc.is_discarded()) throw IoError("not valid JSON", path.string());
-  return replay_log(doc, path.string());
-}
-
-void write_log(const Editor& editor, const std::filesystem::path& path) {
-  const std::string text = editor.log().dump(1);
-  write_atomically(path, [&](std::ostream& out) { out << text << '\n'; });
+  const std::string text = io_detail::read_file(path);
+  return replay_log(text, path.string());
 }
 
 }  // namespace dlfl

@@ -1,19 +1,23 @@
 #pragma once
-// Operation logs: writing an editor's session to a versioned JSON file, and replaying one. Format:
-// docs/oplog.md.
+// Operation logs: an editor's session as a versioned JSON document ("format": "dlfl-oplog"), written and read
+// from the operations' declarations, and replayed. Format: docs/oplog.md. This file is the one home of the
+// log's JSON conversion.
 
 #include <cstddef>
 #include <filesystem>
-#include <nlohmann/json.hpp>
 #include <string>
+#include <string_view>
 
 #include <dlfl/errors.h>
 #include <dlfl/history/editor.h>
 
 namespace dlfl {
 
+/// The log version this library writes. Version 1 logs (written before the operation registry) still replay.
+inline constexpr int oplog_version = 2;
+
 /// A log that cannot be replayed. `op()` is the index of the offending op (or npos for the document itself)
-/// and `field()` the field at fault; the message names both.
+/// and `field()` the field at fault ("corner1", "params.t"); the message names both.
 class LogError : public IoError {
  public:
   static constexpr std::size_t npos = static_cast<std::size_t>(-1);
@@ -26,15 +30,19 @@ class LogError : public IoError {
   std::string field_;
 };
 
-/// Replays a log document in a fresh editor (with the log's undo limit) and returns it; `name` is used in
-/// messages. Throws LogError for a bad version or format, an unknown op, a missing or mistyped field, a
-/// handle that does not exist at that point, or an op that fails.
-Editor replay_log(const nlohmann::json& log, const std::string& name = "log");
+/// The editor's session as log text (JSON, one op per entry).
+std::string log_text(const Editor& editor);
 
-/// Reads a log file and replays it. Throws IoError if the file cannot be read or is not JSON, else as above.
-Editor replay_log_file(const std::filesystem::path& path);
-
-/// Writes `editor.log()` to a file atomically.
+/// Writes `log_text(editor)` to a file atomically.
 void write_log(const Editor& editor, const std::filesystem::path& path);
+
+/// Replays log text in a fresh editor (with the log's undo limit) and returns it; `name` is used in
+/// messages. Every op's parameters are checked against its declaration before it runs. Throws LogError for
+/// bad JSON, a bad version or format, an unknown op, an unknown, missing, mistyped or out-of-range field, a
+/// handle that does not exist at that point, or an op that fails.
+Editor replay_log(std::string_view text, const std::string& name = "log");
+
+/// Reads a log file and replays it. Throws IoError if the file cannot be read, else as above.
+Editor replay_log_file(const std::filesystem::path& path);
 
 }  // namespace dlfl

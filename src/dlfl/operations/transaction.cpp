@@ -1,0 +1,111 @@
+#include <dlfl/operations/transaction.h>
+
+namespace dlfl {
+
+void ChangeRecord::revert(Mesh& mesh) {
+  // Each inverse applied returns its own inverse; in the order applied they redo the changes.
+  std::vector<Step> opposite;
+  opposite.reserve(inverses_.size());
+  for (auto it = inverses_.rbegin(); it != inverses_.rend(); ++it) opposite.push_back(mesh.apply(*it));
+  inverses_ = std::move(opposite);
+}
+
+void ChangeRecord::append(ChangeRecord&& later) {
+  if (inverses_.empty()) {
+    inverses_ = std::move(later.inverses_);
+    return;
+  }
+  inverses_.insert(inverses_.end(), later.inverses_.begin(), later.inverses_.end());
+}
+
+Transaction::~Transaction() {
+  if (!committed_ && !record_.empty()) {
+    // Reverting a record of successful operators on the mesh they left cannot fail, so this does not throw.
+    record_.revert(mesh_);
+  }
+}
+
+VertexId Transaction::create_vertex(const glm::dvec3& position) {
+  const VertexId v = mesh_.create_vertex(position);
+  Step inverse{Step::Kind::delete_vertex};
+  inverse.vertex = v;
+  record_.inverses_.push_back(inverse);
+  return v;
+}
+
+void Transaction::delete_vertex(VertexId v) {
+  Step step{Step::Kind::delete_vertex};
+  step.vertex = v;
+  apply(step);
+}
+
+InsertEdgeResult Transaction::insert_edge(CornerId c1, CornerId c2) {
+  InsertEdgeResult r = mesh_.insert_edge(c1, c2);
+  record_.inverses_.push_back(r.inverse);
+  return r;
+}
+
+DeleteEdgeResult Transaction::delete_edge(EdgeId e) {
+  DeleteEdgeResult r = mesh_.delete_edge(e);
+  record_.inverses_.push_back(r.inverse);
+  return r;
+}
+
+VertexId Transaction::subdivide_edge(EdgeId e, const glm::dvec3& position) {
+  const VertexId v = mesh_.subdivide_edge(e, position);
+  Step inverse{Step::Kind::unsubdivide_edge};
+  inverse.vertex = v;
+  record_.inverses_.push_back(inverse);
+  return v;
+}
+
+void Transaction::unsubdivide_edge(VertexId v) {
+  Step step{Step::Kind::unsubdivide_edge};
+  step.vertex = v;
+  apply(step);
+}
+
+void Transaction::set_position(VertexId v, const glm::dvec3& position) {
+  Step step{Step::Kind::set_position};
+  step.vertex = v;
+  step.position = position;
+  apply(step);
+}
+
+FaceManifold Transaction::create_face_manifold(std::span<const glm::dvec3> positions,
+                                               std::span<VertexId> vertices,
+                                               std::span<CornerId> front_corners,
+                                               std::span<CornerId> back_corners) {
+  // The free function checks all its input before it changes anything, then appends N vertices and N edges.
+  const std::uint32_t first_vertex = mesh_.vertex_capacity();
+  const std::uint32_t first_edge = mesh_.edge_capacity();
+  const FaceManifold fm = dlfl::create_face_manifold(mesh_, positions, vertices, front_corners, back_corners);
+  const auto n = static_cast<std::uint32_t>(positions.size());
+  // Inverses in the order of the primitives (N create_vertex, then N insert_edge): reverting deletes the
+  // edges last to first, then the point spheres.
+  for (std::uint32_t i = 0; i < n; ++i) {
+    Step s{Step::Kind::delete_vertex};
+    s.vertex = VertexId(first_vertex + i);
+    record_.inverses_.push_back(s);
+  }
+  for (std::uint32_t i = 0; i < n; ++i) {
+    Step s{Step::Kind::delete_edge};
+    s.edge = EdgeId(first_edge + i);
+    record_.inverses_.push_back(s);
+  }
+  return fm;
+}
+
+void Transaction::apply(const Step& step) { record_.inverses_.push_back(mesh_.apply(step)); }
+
+ChangeRecord Transaction::commit() {
+  committed_ = true;
+  return std::move(record_);
+}
+
+void Transaction::rollback() {
+  record_.revert(mesh_);
+  record_ = ChangeRecord();
+}
+
+}  // namespace dlfl

@@ -1,0 +1,84 @@
+#pragma once
+// The recorder through which every composite operation changes a mesh. It runs the Euler operators and keeps
+// the exact inverse of each one, so an operation gets its undo from the record with no undo code of its own,
+// and a failure part-way leaves the mesh exactly as it was.
+
+#include <cstddef>
+#include <glm/vec3.hpp>
+#include <span>
+#include <vector>
+
+#include <dlfl/create_face_manifold.h>
+#include <dlfl/mesh.h>
+
+namespace dlfl {
+
+/// The inverses of a sequence of changes, in the order the changes were made. `revert` applies them back to
+/// front, which restores the mesh exactly (same handles, bit-identical positions), and turns the record into
+/// the one that redoes the changes.
+class ChangeRecord {
+ public:
+  ChangeRecord() = default;
+  explicit ChangeRecord(std::vector<Step> inverses) : inverses_(std::move(inverses)) {}
+
+  bool empty() const { return inverses_.empty(); }
+  std::size_t size() const { return inverses_.size(); }
+  /// The inverse steps, oldest change first.
+  std::span<const Step> inverses() const { return inverses_; }
+
+  /// Undoes the recorded changes on `mesh` (which must be the mesh they were made on, as they left it), and
+  /// becomes the record of that undo: reverting again redoes them.
+  void revert(Mesh& mesh);
+
+  /// Appends the changes of `later`, made after this record's.
+  void append(ChangeRecord&& later);
+
+ private:
+  friend class Transaction;
+  std::vector<Step> inverses_;
+};
+
+/// Changes a mesh through the Euler operators and records their inverses. Each function has the contract of
+/// the `Mesh` operator of the same name; when it throws, the mesh is unchanged by that call.
+///
+/// A transaction that is destroyed without `commit()` (for instance while an exception propagates out of a
+/// composite operation) reverts everything it did, so an operation either completes or changes nothing.
+class Transaction {
+ public:
+  explicit Transaction(Mesh& mesh) : mesh_(mesh) {}
+  Transaction(const Transaction&) = delete;
+  Transaction& operator=(const Transaction&) = delete;
+  ~Transaction();
+
+  /// The mesh, to read. Changes go through the functions below.
+  const Mesh& mesh() const { return mesh_; }
+
+  VertexId create_vertex(const glm::dvec3& position);
+  void delete_vertex(VertexId v);
+  InsertEdgeResult insert_edge(CornerId c1, CornerId c2);
+  DeleteEdgeResult delete_edge(EdgeId e);
+  VertexId subdivide_edge(EdgeId e, const glm::dvec3& position);
+  void unsubdivide_edge(VertexId v);
+  void set_position(VertexId v, const glm::dvec3& position);
+  /// CREATEFACEMANIFOLD (N create_vertex, then N insert_edge), as the free function of the same name.
+  FaceManifold create_face_manifold(std::span<const glm::dvec3> positions, std::span<VertexId> vertices = {},
+                                    std::span<CornerId> front_corners = {},
+                                    std::span<CornerId> back_corners = {});
+  /// Any operator given as a value.
+  void apply(const Step& step);
+
+  /// Number of changes recorded so far.
+  std::size_t size() const { return record_.size(); }
+
+  /// Ends the transaction and hands over its record; the changes stay.
+  ChangeRecord commit();
+  /// Undoes every change made so far; the transaction stays open (and empty).
+  void rollback();
+
+ private:
+  Mesh& mesh_;
+  ChangeRecord record_;
+  bool committed_ = false;
+};
+
+}  // namespace dlfl

@@ -1,0 +1,55 @@
+// The operations that replace the whole mesh: loading one, setting one, and subdivision schemes. The editor
+// keeps the previous mesh whole, so undoing them is a swap.
+
+#include <dlfl/errors.h>
+#include <dlfl/io/mesh_io.h>
+#include <dlfl/operations/detail/operation_table.h>
+#include <dlfl/schemes/scheme_registry.h>
+
+namespace dlfl::detail {
+
+std::vector<OperationSpec> whole_mesh_operation_specs() {
+  std::vector<OperationSpec> ops;
+
+  ops.push_back(replace_operation(
+      "load", "makes a mesh read from a file the current mesh",
+      {param("path", ParamType::text, "the file it was read from"),
+       param("mesh", ParamType::mesh, "the mesh itself (self-contained logs)").optional("read from path")},
+      [](const Mesh&, const Params& p) {
+        if (p.has("mesh")) return p.get("mesh").as_mesh();
+        return read_mesh(p.text("path"));
+      }));
+
+  ops.push_back(replace_operation("mesh", "makes the given mesh the current mesh",
+                                  {param("mesh", ParamType::mesh, "the mesh")},
+                                  [](const Mesh&, const Params& p) { return p.get("mesh").as_mesh(); }));
+
+  ops.push_back(replace_operation(
+      "subdivide", "applies a subdivision scheme a number of times (dlfl schemes lists them)",
+      {param("scheme", ParamType::text, "the scheme's name"),
+       param("iterations", ParamType::integer, 1, "number of steps").in(0, 64),
+       param("params", ParamType::params, Params{}, "the scheme's parameters")},
+      [](const Mesh& current, const Params& p) {
+        const std::string& scheme = p.text("scheme");
+        const Params& params = p.get("params").as_params();
+        const auto n = p.integer("iterations");
+        // Each step reads the previous mesh and builds a new one; the current mesh is never touched.
+        Mesh next = n == 0 ? current : apply_scheme(current, scheme, params);
+        for (std::int64_t i = 1; i < n; ++i) next = apply_scheme(next, scheme, params);
+        return next;
+      },
+      [](const Mesh&, Params& p) {
+        // Resolved now, so that an unknown scheme or a bad value fails before any work, and the log records
+        // every parameter in force.
+        try {
+          p["params"] = resolve_scheme_params(p.text("scheme"), p.get("params").as_params());
+        } catch (const UnknownNameError& e) {
+          throw ParameterError(std::string("subdivide: ") + e.what(), "scheme");
+        } catch (const ParameterError& e) {
+          throw ParameterError(std::string("subdivide: ") + e.what(), "params." + e.parameter());
+        }
+      }));
+  return ops;
+}
+
+}  // namespace dlfl::detail
