@@ -23,6 +23,9 @@
 #include <dlfl/mesh.h>
 #include <dlfl/io/atomic_file.h>
 #include <dlfl/io/mesh_io.h>
+#include <dlfl/io/obj.h>
+#include <dlfl/io/off.h>
+#include <dlfl/io/ply.h>
 
 namespace fs = std::filesystem;
 using namespace dlfl;

@@ -1,4 +1,8 @@
 #include <dlfl/io/mesh_io.h>
+#include <dlfl/io/obj.h>
+#include <dlfl/io/off.h>
+#include <dlfl/io/parsed_polygons.h>
+#include <dlfl/io/ply.h>
 
 #include <algorithm>
 #include <cctype>

@@ -1,15 +1,14 @@
 #pragma once
-// Reading and writing meshes: OBJ, OFF, PLY (ASCII and binary little-endian), and the native JSON format
-// (which keeps the full DLFL structure). Format by file extension.
+// Reading and writing mesh files, format by extension: OBJ, OFF, PLY (ASCII and binary little-endian), and
+// the native JSON format (which keeps the full DLFL structure). Each format's parser and writer has its own
+// header: obj.h, off.h, ply.h, json_mesh.h.
 
 #include <cstddef>
 #include <filesystem>
-#include <iosfwd>
 #include <string>
-#include <vector>
 
+#include <dlfl/errors.h>
 #include <dlfl/mesh.h>
-#include <dlfl/polygon_soup.h>
 
 namespace dlfl {
 
@@ -18,32 +17,6 @@ enum class MeshFormat { obj, off, ply, json };
 /// The format for a path's extension (.obj, .off, .ply, .json; case-insensitive). Throws IoError naming the
 /// path for any other extension.
 MeshFormat format_for_path(const std::filesystem::path& path);
-
-/// A parsed file: the polygons plus, for error messages, the file line of each vertex and face (0 where a
-/// line does not apply, as in binary PLY).
-struct ParsedPolygons {
-  PolygonSoup soup;
-  std::vector<std::size_t> vertex_lines;
-  std::vector<std::size_t> face_lines;
-};
-
-/// Parsers. `name` is used in error messages. They throw IoError with the name and line for malformed or
-/// truncated input, out-of-range indices and non-finite coordinates. OBJ accepts `v`, `f` with `v`, `v/vt`,
-/// `v//vn`, `v/vt/vn` and negative (relative) indices, comments and ignores other statements.
-ParsedPolygons parse_obj(std::istream& in, const std::string& name);
-ParsedPolygons parse_off(std::istream& in, const std::string& name);
-/// PLY, ASCII or binary_little_endian: reads the vertex x/y/z (float or double) and the face vertex_indices
-/// list, skipping other properties and elements.
-ParsedPolygons parse_ply(std::istream& in, const std::string& name);
-
-/// Writers. Coordinates are written so that they read back bit-identical (shortest round-trip decimal in
-/// text, doubles in binary PLY).
-void write_obj(std::ostream& out, const PolygonSoup& soup);
-void write_off(std::ostream& out, const PolygonSoup& soup);
-void write_ply(std::ostream& out, const PolygonSoup& soup, bool binary);
-
-/// Builds the mesh from parsed polygons, turning a PolygonError into an IoError at the offending file line.
-Mesh build_mesh(const ParsedPolygons& parsed, const std::string& name);
 
 /// Reads a mesh file, format by extension. Boundary loops become hole faces (see build_mesh). A .json file is
 /// the native format and comes back exactly as saved, handles included.

@@ -3,7 +3,7 @@
 #include <istream>
 
 #include <dlfl/io/detail/text_io.h>
-#include <dlfl/io/mesh_io.h>
+#include <dlfl/io/off.h>
 
 namespace dlfl {
 

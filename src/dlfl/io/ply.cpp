@@ -5,7 +5,7 @@
 #include <vector>
 
 #include <dlfl/io/detail/text_io.h>
-#include <dlfl/io/mesh_io.h>
+#include <dlfl/io/ply.h>
 
 namespace dlfl {
 

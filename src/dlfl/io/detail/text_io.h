@@ -19,7 +19,7 @@
 #include <string_view>
 
 #include <dlfl/errors.h>
-#include <dlfl/io/mesh_io.h>
+#include <dlfl/io/parsed_polygons.h>
 
 namespace dlfl::io_detail {
 
