@@ -178,17 +178,18 @@ bool Editor::redo() {
   return true;
 }
 
-std::vector<Editor::HistoryEntry> Editor::undo_history() const {
-  std::vector<HistoryEntry> out;
-  for (const auto& e : undo_) out.push_back({e.label, e.operations});
+namespace {
+template <class Entries>
+std::vector<Editor::HistoryEntry> report(const Entries& entries) {
+  std::vector<Editor::HistoryEntry> out;
+  for (const auto& e : entries) out.push_back({e.label, e.operations});
   return out;
 }
+}  // namespace
 
-std::vector<Editor::HistoryEntry> Editor::redo_history() const {
-  std::vector<HistoryEntry> out;
-  for (const auto& e : redo_) out.push_back({e.label, e.operations});
-  return out;
-}
+std::vector<Editor::HistoryEntry> Editor::undo_history() const { return report(undo_); }
+
+std::vector<Editor::HistoryEntry> Editor::redo_history() const { return report(redo_); }
 
 void Editor::clear_history() {
   require_no_group("clear_history");

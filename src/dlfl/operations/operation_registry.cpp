@@ -24,13 +24,20 @@ const std::vector<OperationSpec>& table() {
 
 }  // namespace
 
-OperationSpec edit_operation(std::string name, std::string doc, std::vector<ParamSpec> params,
-                             std::string counts, EditFunction edit, CheckFunction check) {
+namespace {
+OperationSpec declared(std::string name, OperationSpec::Kind kind, std::string doc, std::vector<ParamSpec> params) {
   OperationSpec op;
   op.name = std::move(name);
-  op.kind = OperationSpec::Kind::edit;
+  op.kind = kind;
   op.doc = std::move(doc);
   op.params = std::move(params);
+  return op;
+}
+}  // namespace
+
+OperationSpec edit_operation(std::string name, std::string doc, std::vector<ParamSpec> params, std::string counts,
+                             EditFunction edit, CheckFunction check) {
+  OperationSpec op = declared(std::move(name), OperationSpec::Kind::edit, std::move(doc), std::move(params));
   op.counts = std::move(counts);
   op.edit = std::move(edit);
   op.check = std::move(check);
@@ -39,23 +46,14 @@ OperationSpec edit_operation(std::string name, std::string doc, std::vector<Para
 
 OperationSpec replace_operation(std::string name, std::string doc, std::vector<ParamSpec> params,
                                 ReplaceFunction replace, CheckFunction check) {
-  OperationSpec op;
-  op.name = std::move(name);
-  op.kind = OperationSpec::Kind::replace;
-  op.doc = std::move(doc);
-  op.params = std::move(params);
+  OperationSpec op = declared(std::move(name), OperationSpec::Kind::replace, std::move(doc), std::move(params));
   op.replace = std::move(replace);
   op.check = std::move(check);
   return op;
 }
 
 OperationSpec history_operation(std::string name, std::string doc, std::vector<ParamSpec> params) {
-  OperationSpec op;
-  op.name = std::move(name);
-  op.kind = OperationSpec::Kind::history;
-  op.doc = std::move(doc);
-  op.params = std::move(params);
-  return op;
+  return declared(std::move(name), OperationSpec::Kind::history, std::move(doc), std::move(params));
 }
 
 std::span<const OperationSpec> operations() { return table(); }
