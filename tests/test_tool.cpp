@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include <dlfl/schemes/registry.h>
+#include <dlfl/schemes/scheme_registry.h>
 #include "tool_runner.h"
 
 using namespace dlfl::test;

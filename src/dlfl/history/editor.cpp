@@ -10,13 +10,23 @@ namespace dlfl {
 namespace {
 nlohmann::json point(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
 
+// Booleans, integers and numbers as JSON values; everything else (text, a point) as the text a command line
+// would give, which resolving reads back.
 nlohmann::json params_json(const SchemeParams& params) {
   nlohmann::json j = nlohmann::json::object();
   for (const auto& [name, value] : params) {
-    if (const double* d = std::get_if<double>(&value)) {
-      j[name] = *d;
-    } else {
-      j[name] = std::get<std::string>(value);
+    switch (value.kind()) {
+      case Value::Kind::boolean:
+        j[name] = value.as_bool();
+        break;
+      case Value::Kind::integer:
+        j[name] = value.as_integer();
+        break;
+      case Value::Kind::number:
+        j[name] = value.as_number();
+        break;
+      default:
+        j[name] = value.to_text();
     }
   }
   return j;

@@ -17,7 +17,7 @@
 
 #include <dlfl/create_face_manifold.h>
 #include <dlfl/mesh.h>
-#include <dlfl/schemes/registry.h>
+#include <dlfl/schemes/scheme_registry.h>
 
 namespace dlfl {
 

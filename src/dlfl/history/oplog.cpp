@@ -1,5 +1,6 @@
 #include <dlfl/history/oplog.h>
 
+#include <cstdint>
 #include <fstream>
 #include <sstream>
 
@@ -76,12 +77,17 @@ SchemeParams params_from(const OpReader& r) {
   if (!p.is_object()) r.fail("params", "expected an object");
   SchemeParams params;
   for (const auto& [key, value] : p.items()) {
-    if (value.is_number()) {
+    if (value.is_boolean()) {
+      params[key] = value.get<bool>();
+    } else if (value.is_number_integer() &&
+               !(value.is_number_unsigned() && value.get<std::uint64_t>() > std::uint64_t(INT64_MAX))) {
+      params[key] = value.get<std::int64_t>();
+    } else if (value.is_number()) {
       params[key] = value.get<double>();
     } else if (value.is_string()) {
       params[key] = value.get<std::string>();
     } else {
-      r.fail("params." + key, "expected a number or a string");
+      r.fail("params." + key, "expected a boolean, a number or a string");
     }
   }
   return params;

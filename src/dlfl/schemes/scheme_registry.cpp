@@ -1,0 +1,70 @@
+#include <dlfl/schemes/scheme_registry.h>
+
+#include <algorithm>
+
+#include <dlfl/errors.h>
+#include <dlfl/format.h>
+#include <dlfl/schemes/detail/scheme_table.h>
+
+namespace dlfl {
+namespace {
+
+// Every scheme, once: one line per scheme.
+std::vector<SchemeSpec> all_schemes() {
+  return {
+      detail::catmull_clark_scheme(), detail::doo_sabin_scheme(),
+      detail::dual_scheme(),          detail::dual_honeycomb_dual_scheme(),
+      detail::honeycomb_scheme(),     detail::zhang_wang_honeycomb_scheme(),
+      detail::loop_scheme(),          detail::mhp_scheme(),
+      detail::mlca_scheme(),          detail::mp_honeycomb_scheme(),
+      detail::mp_pushing_scheme(),    detail::sqrt3_scheme(),
+  };
+}
+
+const std::vector<SchemeSpec>& table() {
+  static const std::vector<SchemeSpec> sorted = [] {
+    std::vector<SchemeSpec> all = all_schemes();
+    std::sort(all.begin(), all.end(),
+              [](const SchemeSpec& a, const SchemeSpec& b) { return a.name < b.name; });
+    return all;
+  }();
+  return sorted;
+}
+
+}  // namespace
+
+std::span<const SchemeSpec> schemes() { return table(); }
+
+std::vector<std::string> scheme_names() {
+  std::vector<std::string> names;
+  for (const SchemeSpec& s : table()) names.push_back(s.name);
+  return names;
+}
+
+const SchemeSpec& find_scheme(std::string_view name) {
+  for (const SchemeSpec& s : table()) {
+    if (s.name == name) return s;
+  }
+  const std::vector<std::string> names = scheme_names();
+  const std::string suggestion = closest_name(name, names);
+  throw UnknownNameError(unknown_name_message("scheme", name, names, suggestion), suggestion);
+}
+
+namespace {
+Params resolve(const SchemeSpec& spec, const Params& given) {
+  Params resolved = resolve_params(spec.name, spec.params, given);
+  if (spec.check) spec.check(given, resolved);
+  return resolved;
+}
+}  // namespace
+
+Params resolve_scheme_params(std::string_view scheme, const Params& given) {
+  return resolve(find_scheme(scheme), given);
+}
+
+Mesh apply_scheme(const Mesh& mesh, std::string_view scheme, const Params& params, Origins* origins) {
+  const SchemeSpec& spec = find_scheme(scheme);
+  return spec.apply(mesh, resolve(spec, params), origins);
+}
+
+}  // namespace dlfl
