@@ -18,5 +18,6 @@ Action add_check(CLI::App& app);
 Action add_convert(CLI::App& app);
 Action add_subdivide(CLI::App& app);
 Action add_replay(CLI::App& app);
+Action add_schemes(CLI::App& app);
 
 }  // namespace dlfl::tool

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   add(add_convert);
   add(add_subdivide);
   add(add_replay);
+  add(add_schemes);
 
   try {
     app.parse(argc, argv);
