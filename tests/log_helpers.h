@@ -8,7 +8,7 @@
 #include <dlfl/history/editor.h>
 #include <dlfl/history/oplog.h>
 
-namespace test {
+namespace dlfl::test {
 
 inline nlohmann::json log_json(const dlfl::Editor& editor) {
   return nlohmann::json::parse(dlfl::log_text(editor));
@@ -18,4 +18,4 @@ inline dlfl::Editor replay_json(const nlohmann::json& log, const std::string& na
   return dlfl::replay_log(log.dump(), name);
 }
 
-}  // namespace test
+}  // namespace dlfl::test

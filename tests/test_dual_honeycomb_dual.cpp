@@ -227,8 +227,13 @@ TEST_CASE("dual-honeycomb-dual: through the editor, its undo and the log, with t
   p.a = 0.7;
   check_editor_and_log(in, "dual-honeycomb-dual", {{"t", 0.4}, {"a", 0.7}},
                        dual_honeycomb_dual(dual_honeycomb_dual(in, p), p), build_mesh(grid_soup(2, 1)));
-  // Ranges are checked against the mesh when the step runs (the tension's range depends on the face sizes).
-  CHECK_THROWS_WITH_AS(apply_scheme(in, "dual-honeycomb-dual", {{"t", 2.0}}),
-                       doctest::Contains("dual-honeycomb-dual: honeycomb: parameter t = 2 is outside [0, 1]"),
+  // t's range needs no mesh: it is refused when the parameters are resolved, before any work.
+  CHECK_THROWS_WITH_AS(resolve_scheme_params("dual-honeycomb-dual", {{"t", 2.0}}),
+                       doctest::Contains("dual-honeycomb-dual: parameter t = 2 is outside [0, 1]"),
+                       ParameterError);
+  // The tension's range depends on the face sizes (of the dual): checked when the step runs. The cube's dual
+  // (the octahedron) has triangles only; a0 + a1/3 = 1.2 is too much.
+  CHECK_THROWS_WITH_AS(apply_scheme(test::cube(), "dual-honeycomb-dual", {{"a0", 0.2}, {"a1", 3.0}}),
+                       doctest::Contains("dual-honeycomb-dual: honeycomb: tension a0 + a1/N = 1.2"),
                        InvalidArgument);
 }

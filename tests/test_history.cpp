@@ -10,6 +10,7 @@
 #include <dlfl/mesh_hash.h>
 #include <dlfl/validate.h>
 #include <dlfl/history/editor.h>
+#include <dlfl/schemes/scheme_registry.h>
 #include <dlfl/io/json_mesh.h>
 #include <dlfl/io/mesh_io.h>
 #include <dlfl/history/oplog.h>
@@ -50,7 +51,7 @@ TEST_CASE("history: undo of a scheme gives back M_n and redo gives back M_n+1") 
   const Mesh m0 = ed.mesh();
   ed.subdivide("honeycomb", {}, 2);
   // M_n+1 computed independently of the editor.
-  const SchemeParams p = resolve_scheme_params("honeycomb", {});
+  const Params p = resolve_scheme_params("honeycomb", {});
   const Mesh m2 = apply_scheme(apply_scheme(m0, "honeycomb", p), "honeycomb", p);
   CHECK(ed.mesh() == m2);
   REQUIRE(ed.undo());
@@ -219,7 +220,7 @@ TEST_CASE("history: every malformed log gets an error naming the op and the fiel
   CHECK_NOTHROW(test::replay_json(log_of(ok_ops)));
   {
     nlohmann::json log = log_of(ok_ops);
-    log["version"] = 2;
+    log["version"] = 3;
     CHECK(log_error(log).field() == "version");
     CHECK(log_error(log).op() == LogError::npos);
   }

@@ -24,7 +24,7 @@
 #include <dlfl/schemes/meng_prautzsch_honeycomb.h>
 #include <dlfl/schemes/meng_prautzsch_pushing.h>
 #include <dlfl/analysis/polyhedron_angles.h>
-#include <dlfl/schemes/registry.h>
+#include <dlfl/schemes/scheme_registry.h>
 #include "test_meshes.h"
 
 using namespace dlfl;
@@ -756,21 +756,28 @@ TEST_CASE("meng-prautzsch: bad input and bad parameters get their errors") {
 }
 
 TEST_CASE("meng-prautzsch: registry entries record every parameter and check them") {
-  const SchemeParams h = resolve_scheme_params("mp-honeycomb", {});
-  CHECK(h == SchemeParams{{"tau", 0.5},
-                          {"ratio", 1.0},
-                          {"center", std::string("centroid")},
-                          {"random", 0.0},
-                          {"epsilon", 0.25},
-                          {"seed", 1.0}});
-  const SchemeParams p = resolve_scheme_params("mp-pushing", {{"tau", 0.3}});
-  CHECK(std::get<double>(p.at("tau")) == 0.3);
+  // Each parameter with its declared type: a boolean, an integer seed, the centre's keyword as text.
+  const Params h = resolve_scheme_params("mp-honeycomb", {});
+  CHECK(h == Params{{"tau", 0.5},
+                    {"ratio", 1.0},
+                    {"center", "centroid"},
+                    {"random", false},
+                    {"epsilon", 0.25},
+                    {"seed", 1}});
+  const Params p = resolve_scheme_params("mp-pushing", {{"tau", 0.3}});
+  CHECK(p.number("tau") == 0.3);
   CHECK(p.size() == 6);
-  const SchemeParams m = resolve_scheme_params("mhp", {{"pattern", std::string("H4P4")}});
-  CHECK(std::get<std::string>(m.at("pattern")) == "H4P4");
+  const Params m = resolve_scheme_params("mhp", {{"pattern", std::string("H4P4")}});
+  CHECK(m.text("pattern") == "H4P4");
   for (const char* name : {"tau_h", "ratio_h", "tau_p", "ratio_p", "center", "random", "epsilon", "seed"}) {
     CHECK(m.count(name) == 1);
   }
+  // The values old logs hold (a centre as text, random and seed as doubles) resolve to the typed ones.
+  const Params old = resolve_scheme_params(
+      "mp-pushing", {{"center", "0.01,0,0"}, {"random", 1.0}, {"seed", 7.0}, {"epsilon", 0.25}});
+  CHECK(old.point("center") == glm::dvec3(0.01, 0, 0));
+  CHECK(old.boolean("random"));
+  CHECK(old.integer("seed") == 7);
   // A centre given as text "x,y,z" is the centre.
   MpHoneycombParams direct;
   direct.center = glm::dvec3(0.25, 0, -0.5);
@@ -784,10 +791,10 @@ TEST_CASE("meng-prautzsch: registry entries record every parameter and check the
                      resolve_scheme_params("mhp", {{"pattern", std::string("(PH)1")}, {"tau_p", 0.25}})) ==
         mhp(test::tetrahedron(), twice));
   // Bad values name the parameter.
-  auto bad = [](const char* scheme, SchemeParams given, const char* needle) {
+  auto bad = [](const char* scheme, Params given, const char* needle) {
     CAPTURE(scheme);
     CAPTURE(needle);
-    CHECK_THROWS_WITH_AS(resolve_scheme_params(scheme, given), doctest::Contains(needle), InvalidArgument);
+    CHECK_THROWS_WITH_AS(resolve_scheme_params(scheme, given), doctest::Contains(needle), ParameterError);
   };
   bad("mp-honeycomb", {{"center", std::string("1,2")}}, "center");
   bad("mp-honeycomb", {{"center", 3.0}}, "center");

@@ -17,7 +17,7 @@
 #include "scheme_meshes.h"
 #include <dlfl/schemes/catmull_clark.h>
 #include <dlfl/schemes/mlca_polygons.h>
-#include <dlfl/schemes/registry.h>
+#include <dlfl/schemes/scheme_registry.h>
 #include "test_meshes.h"
 
 using namespace dlfl;

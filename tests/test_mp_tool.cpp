@@ -24,9 +24,10 @@ std::filesystem::path dented_octahedron_obj() {
   return path;
 }
 
-void check_one_line_error(const Run& r, const std::string& needle) {
+// Exit 2 for a bad parameter (a usage error), 1 for an input the scheme refuses.
+void check_one_line_error(const Run& r, const std::string& needle, int exit_code = 1) {
   CAPTURE(r.err);
-  CHECK(r.exit_code == 1);
+  CHECK(r.exit_code == exit_code);
   CHECK(r.err.rfind("error: ", 0) == 0);
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   CHECK(r.err.find(needle) != std::string::npos);
@@ -132,14 +133,14 @@ TEST_CASE("mp tool: bad input and parameters give one error line and write nothi
   const auto out = scratch("never.obj");
   const std::string o = " -o '" + out.string() + "'";
   check_one_line_error(run("subdivide " + example("cube.obj") + " -s mhp --param pattern=H4Q" + o),
-                       "at character 3");
+                       "at character 3", 2);
   check_one_line_error(run("subdivide " + example("cube.obj") + " -s mhp --param 'pattern=(HP'" + o),
-                       "expected ')'");
+                       "expected ')'", 2);
   check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-honeycomb --param tau=1.5" + o),
-                       "tau");
-  check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-pushing --param tau=0" + o), "tau");
+                       "tau", 2);
+  check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-pushing --param tau=0" + o), "tau", 2);
   check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-pushing --param center=1,2" + o),
-                       "center");
+                       "center", 2);
   Run outside = run("subdivide " + example("cube.obj") + " -s mp-honeycomb --param center=0,0,5" + o);
   check_one_line_error(outside, "not strictly inside the plane of f");
   check_one_line_error(run("subdivide '" + dented_octahedron_obj().string() + "' -s mp-pushing" + o),

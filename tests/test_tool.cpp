@@ -8,7 +8,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include <dlfl/schemes/registry.h>
+#include <dlfl/schemes/scheme_registry.h>
 #include "tool_runner.h"
 
 using namespace dlfl::test;
@@ -137,19 +137,19 @@ TEST_CASE("tool: subdivide writes the honeycomb and a log that replays to the sa
   CHECK(doc["ops"][1]["params"] == nlohmann::json({{"t", 0.5}, {"a0", 0.45}, {"a1", 1.25}}));
 }
 
-TEST_CASE("tool: subdivide rejects bad parameters with one line and writes nothing") {
+TEST_CASE("tool: subdivide rejects bad parameters with one line, exit 2 (a usage error), and writes nothing") {
   const auto out = scratch("never2.obj");
   for (const char* params :
        {"--param t=1.5", "--param a=0", "--param nope=1", "--param t", "--param a=0.5 --param a0=0.4"}) {
     CAPTURE(params);
     Run r =
         run("subdivide " + example("cube.obj") + " -s honeycomb " + params + " -o '" + out.string() + "'");
-    CHECK(r.exit_code == 1);
+    CHECK(r.exit_code == 2);
     CHECK(r.err.rfind("error: ", 0) == 0);
     CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
     CHECK_FALSE(std::filesystem::exists(out));
   }
-  CHECK(run("subdivide " + example("cube.obj") + " -s nosuch -o '" + out.string() + "'").exit_code == 1);
+  CHECK(run("subdivide " + example("cube.obj") + " -s nosuch -o '" + out.string() + "'").exit_code == 2);
   CHECK(run("subdivide " + example("cube.obj") + " -o '" + out.string() + "'").exit_code == 2);  // no -s
   CHECK_FALSE(std::filesystem::exists(out));
 }

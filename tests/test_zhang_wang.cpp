@@ -20,7 +20,7 @@
 #include <dlfl/io/json_mesh.h>
 #include <dlfl/history/oplog.h>
 #include "scheme_meshes.h"
-#include <dlfl/schemes/registry.h>
+#include <dlfl/schemes/scheme_registry.h>
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
 #include "log_helpers.h"
 #include "test_meshes.h"
@@ -416,11 +416,14 @@ TEST_CASE("zhang-wang: bad parameters are refused naming them") {
   }
   CHECK_THROWS_AS(resolve_scheme_params("honeycomb-zw", {{"a", std::string("steep")}}), InvalidArgument);
   CHECK_THROWS_AS(resolve_scheme_params("honeycomb-zw", {{"d", 0.5}}), InvalidArgument);
-  const SchemeParams full = resolve_scheme_params("honeycomb-zw", {});
-  CHECK(std::get<std::string>(full.at("a")) == "symmetric");
-  CHECK(std::get<double>(full.at("b")) == 2.0 / 3);
-  CHECK(std::get<double>(full.at("c")) == 0.5);
-  CHECK(std::get<double>(full.at("alpha")) == 0.5);
+  const Params full = resolve_scheme_params("honeycomb-zw", {});
+  CHECK(full.text("a") == "symmetric");
+  CHECK(full.number("b") == 2.0 / 3);
+  CHECK(full.number("c") == 0.5);
+  CHECK(full.number("alpha") == 0.5);
+  // The keyword and a number both resolve for `a`; a number of an old log (a double) stays a number.
+  CHECK(resolve_scheme_params("honeycomb-zw", {{"a", "symmetric"}}).text("a") == "symmetric");
+  CHECK(resolve_scheme_params("honeycomb-zw", {{"a", "0.4"}}).number("a") == 0.4);
   FaceId front;
   Mesh fm = face_manifold({{0, 0, 0}, {1, 0, 0}, {0, 1, 0}}, {0, 0, 1}, &front);
   ZhangWangParams stuck;

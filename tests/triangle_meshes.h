@@ -19,7 +19,7 @@
 #include <dlfl/history/editor.h>
 #include <dlfl/history/oplog.h>
 #include "scheme_meshes.h"
-#include <dlfl/schemes/registry.h>
+#include <dlfl/schemes/scheme_registry.h>
 #include "log_helpers.h"
 #include "test_meshes.h"
 

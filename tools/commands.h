@@ -20,5 +20,6 @@ Action add_subdivide(CLI::App& app);
 Action add_replay(CLI::App& app);
 Action add_ops(CLI::App& app);
 Action add_edit(CLI::App& app);
+Action add_schemes(CLI::App& app);
 
 }  // namespace dlfl::tool

@@ -25,6 +25,7 @@ int main(int argc, char** argv) {
   add(add_replay);
   add(add_ops);
   add(add_edit);
+  add(add_schemes);
 
   try {
     app.parse(argc, argv);

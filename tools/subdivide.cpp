@@ -11,6 +11,7 @@
 #include <dlfl/cells/cell_io.h>
 #include <dlfl/io/mesh_io.h>
 #include <dlfl/history/oplog.h>
+#include <dlfl/parameters.h>
 #include <dlfl/schemes/scheme_registry.h>
 
 namespace dlfl::tool {
@@ -60,8 +61,8 @@ Action add_subdivide(CLI::App& app) {
   cmd->add_option("-s,--scheme", a->scheme, "Scheme: " + names)->required();
   cmd->add_option("-n,--iterations", a->iterations, "Number of steps (default 1)")->check(CLI::Range(0, 64));
   cmd->add_option("--param", a->params,
-                  "Scheme parameter NAME=VALUE (repeatable): a number (t=0.5, a=0.7) or text (center=0,0,0, "
-                  "pattern=H4P4)");
+                  "Scheme parameter NAME=VALUE (repeatable), read as the parameter's type: t=0.5, "
+                  "center=0,0,0, random=true, pattern=H4P4 ('dlfl schemes NAME' lists them)");
   cmd->add_option("-o,--output", a->out, "Output mesh (format by extension)")->required();
   cmd->add_option("--log", a->log, "Write the operation log (JSON) here");
   cmd->add_flag("--self-contained", a->self_contained,
@@ -73,7 +74,7 @@ Action add_subdivide(CLI::App& app) {
     for (const auto& p : a->params) {
       auto [name, value] = parse_assignment(p);
       if (params.has(name)) throw ParameterError("parameter " + name + " given twice", name);
-      params[name] = value;
+      params[name] = std::move(value);
     }
     Editor::Options options;
     options.embed_meshes = a->self_contained;

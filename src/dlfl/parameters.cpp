@@ -518,10 +518,10 @@ bool in_range(const ParamSpec& s, double d) {
 }
 
 template <class H>
-void require_alive(std::string_view context, const ParamSpec& spec, const Mesh& mesh, std::int64_t i,
-                   const char* kind) {
-  if (i < 0 || i >= std::int64_t(H::invalid_index) || !mesh.is_alive(H(static_cast<std::uint32_t>(i)))) {
-    bad(context, spec, "= " + std::to_string(i) + ": " + kind + " " + std::to_string(i) + " does not exist");
+void require_alive(std::string_view context, const ParamSpec& spec, const Mesh& mesh, std::int64_t i) {
+  const H h(static_cast<std::uint32_t>(i));
+  if (!mesh.is_alive(h)) {
+    bad(context, spec, "= " + std::to_string(i) + ": " + to_string(h) + " does not exist (removed or never created)");
   }
 }
 
@@ -534,13 +534,13 @@ void check_handle(std::string_view context, const ParamSpec& spec, const Mesh* m
   if (!mesh) return;
   switch (element_type(spec.type)) {
     case ParamType::vertex:
-      return require_alive<VertexId>(context, spec, *mesh, i, "vertex");
+      return require_alive<VertexId>(context, spec, *mesh, i);
     case ParamType::edge:
-      return require_alive<EdgeId>(context, spec, *mesh, i, "edge");
+      return require_alive<EdgeId>(context, spec, *mesh, i);
     case ParamType::face:
-      return require_alive<FaceId>(context, spec, *mesh, i, "face");
+      return require_alive<FaceId>(context, spec, *mesh, i);
     case ParamType::corner:
-      return require_alive<CornerId>(context, spec, *mesh, i, "corner");
+      return require_alive<CornerId>(context, spec, *mesh, i);
     default:
       return;
   }
@@ -654,7 +654,7 @@ Value parse_value(std::string_view context, const ParamSpec& spec, std::string_v
 std::pair<std::string, Value> parse_assignment(std::string_view text) {
   const auto eq = text.find('=');
   if (eq == std::string_view::npos || eq == 0) {
-    throw InvalidArgument("'" + std::string(text) + "' is not of the form name=value");
+    throw ParameterError("'" + std::string(text) + "' is not of the form name=value", std::string(text));
   }
   return {std::string(text.substr(0, eq)), Value(std::string(text.substr(eq + 1)))};
 }

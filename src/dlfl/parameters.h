@@ -222,7 +222,7 @@ Params resolve_params(std::string_view context, std::span<const ParamSpec> specs
 Value parse_value(std::string_view context, const ParamSpec& spec, std::string_view text);
 
 /// Splits "name=value" as typed on a command line; the value stays text until resolved against a
-/// declaration. Throws InvalidArgument without '=' or with an empty name.
+/// declaration. Throws ParameterError without '=' or with an empty name.
 std::pair<std::string, Value> parse_assignment(std::string_view text);
 
 }  // namespace dlfl

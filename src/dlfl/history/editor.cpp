@@ -136,6 +136,12 @@ void Editor::set_position(VertexId v, const glm::dvec3& position) {
   apply("set_position", {{"vertex", v}, {"position", position}});
 }
 
+void Editor::set_face_point(FaceId f, const std::optional<glm::dvec3>& point) {
+  Params params{{"face", f}};
+  if (point) params["position"] = *point;
+  apply("set_face_point", params);
+}
+
 FaceManifold Editor::create_face_manifold(std::span<const glm::dvec3> positions) {
   const Params out = apply("create_face_manifold",
                            {{"positions", std::vector<glm::dvec3>(positions.begin(), positions.end())}});

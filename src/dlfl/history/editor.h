@@ -85,6 +85,9 @@ class Editor {
   VertexId subdivide_edge(EdgeId e, const glm::dvec3& position);
   void unsubdivide_edge(VertexId v);
   void set_position(VertexId v, const glm::dvec3& position);
+  /// Sets (or, with `std::nullopt`, clears) a face's control point, the central control vertex of the
+  /// Zhang-Wang honeycomb scheme: `apply("set_face_point", ...)`.
+  void set_face_point(FaceId f, const std::optional<glm::dvec3>& point);
   /// CREATEFACEMANIFOLD as one undoable entry.
   FaceManifold create_face_manifold(std::span<const glm::dvec3> positions);
 

@@ -12,8 +12,8 @@ const std::vector<OperationSpec>& table() {
   static const std::vector<OperationSpec> all = [] {
     std::vector<OperationSpec> ops;
     // One line per family of operations: adding an operation touches its own file and this list.
-    for (auto family : {detail::euler_operation_specs, detail::whole_mesh_operation_specs,
-                        detail::history_operation_specs}) {
+    for (auto family : {detail::euler_operation_specs, detail::face_point_operation_specs,
+                        detail::whole_mesh_operation_specs, detail::history_operation_specs}) {
       for (auto& op : family()) ops.push_back(std::move(op));
     }
     std::sort(ops.begin(), ops.end(), [](const auto& a, const auto& b) { return a.name < b.name; });

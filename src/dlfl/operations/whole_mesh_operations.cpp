@@ -44,9 +44,9 @@ std::vector<OperationSpec> whole_mesh_operation_specs() {
         try {
           p["params"] = resolve_scheme_params(p.text("scheme"), p.get("params").as_params());
         } catch (const UnknownNameError& e) {
-          throw ParameterError(std::string("subdivide: ") + e.what(), "scheme");
+          throw ParameterError(e.what(), "scheme");
         } catch (const ParameterError& e) {
-          throw ParameterError(std::string("subdivide: ") + e.what(), "params." + e.parameter());
+          throw ParameterError(e.what(), "params." + e.parameter());
         }
       }));
   return ops;

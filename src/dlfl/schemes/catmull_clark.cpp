@@ -6,6 +6,7 @@
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/detail/quad_split.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 
@@ -60,4 +61,15 @@ Mesh catmull_clark(const Mesh& input) {
   return out.finish();
 }
 
+namespace detail {
+
+SchemeSpec catmull_clark_scheme() {
+  return {"catmull-clark",
+          "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh",
+          {},
+          {},
+          [](const Mesh& m, const Params&, Origins*) { return catmull_clark(m); }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

@@ -8,6 +8,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
@@ -183,4 +184,15 @@ Mesh doo_sabin(const Mesh& input) {
   return out.finish();
 }
 
+namespace detail {
+
+SchemeSpec doo_sabin_scheme() {
+  return {"doo-sabin",
+          "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent",
+          {},
+          {},
+          [](const Mesh& m, const Params&, Origins*) { return doo_sabin(m); }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

@@ -5,6 +5,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
@@ -86,4 +87,15 @@ Mesh dual(const Mesh& input) {
   return out.finish();
 }
 
+namespace detail {
+
+SchemeSpec dual_scheme() {
+  return {"dual",
+          "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge",
+          {},
+          {},
+          [](const Mesh& m, const Params&, Origins*) { return dual(m); }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

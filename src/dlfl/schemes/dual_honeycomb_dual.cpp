@@ -3,6 +3,8 @@
 #include <string>
 
 #include <dlfl/errors.h>
+#include <dlfl/schemes/detail/honeycomb_params.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 #include <dlfl/schemes/dual.h>
 
 namespace dlfl {
@@ -24,4 +26,19 @@ Mesh dual_honeycomb_dual(const Mesh& mesh, const HoneycombParams& p) {
   return dual(honeycomb(d, p));
 }
 
+namespace detail {
+
+SchemeSpec dual_honeycomb_dual_scheme() {
+  return {"dual-honeycomb-dual",
+          "root-3 subdivision as dual(honeycomb(dual(mesh))): triangles on any closed polygon mesh",
+          honeycomb_param_specs(),
+          [](const Params& given, Params& resolved) {
+            check_honeycomb_param_set("dual-honeycomb-dual", given, resolved);
+          },
+          [](const Mesh& m, const Params& p, Origins*) {
+            return dual_honeycomb_dual(m, honeycomb_params_from(p));
+          }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

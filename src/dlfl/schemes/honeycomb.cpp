@@ -11,7 +11,9 @@
 #include <vector>
 
 #include <dlfl/errors.h>
+#include <dlfl/schemes/detail/honeycomb_params.h>
 #include <dlfl/schemes/detail/honeycomb_remesh.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
@@ -170,4 +172,49 @@ Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p) {
   return detail::honeycomb_remesh(mesh, face_points, false).mesh;
 }
 
+namespace detail {
+
+std::vector<ParamSpec> honeycomb_param_specs() {
+  const HoneycombParams d;
+  return {
+      param("t", ParamType::number, d.t, "where each edge's point lies: (1 - t) v_m + t v_m+1, formula (1)")
+          .in(0, 1),
+      param("a", ParamType::number, "a constant tension for every face, in place of a0 + a1/N")
+          .optional("a0 + a1/N for an N-sided face")
+          .in_open(0, 1),
+      param("a0", ParamType::number, d.a0, "the tension a0 + a1/N of an N-sided face: its constant part"),
+      param("a1", ParamType::number, d.a1, "the tension a0 + a1/N of an N-sided face: the part divided by N"),
+  };
+}
+
+void check_honeycomb_param_set(const std::string& scheme, const Params& given, Params& resolved) {
+  if (!resolved.has("a")) return;
+  const auto given_value = [&](const char* name) { return given.has(name) && !given.get(name).empty(); };
+  if (given_value("a0") || given_value("a1")) {
+    throw ParameterError(
+        scheme + ": give either parameter a (constant tension) or a0/a1 (a = a0 + a1/N), not both", "a");
+  }
+  resolved.erase("a0");
+  resolved.erase("a1");
+}
+
+HoneycombParams honeycomb_params_from(const Params& p) {
+  HoneycombParams h;
+  h.t = p.number("t");
+  if (p.has("a")) h.a = p.number("a");
+  if (p.has("a0")) h.a0 = p.number("a0");
+  if (p.has("a1")) h.a1 = p.number("a1");
+  return h;
+}
+
+SchemeSpec honeycomb_scheme() {
+  return {
+      "honeycomb",
+      "Akleman-Srinivasan honeycomb: a shrunken copy of every face and a face around every old vertex",
+      honeycomb_param_specs(),
+      [](const Params& given, Params& resolved) { check_honeycomb_param_set("honeycomb", given, resolved); },
+      [](const Mesh& m, const Params& p, Origins*) { return honeycomb(m, honeycomb_params_from(p)); }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

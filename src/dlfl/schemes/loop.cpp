@@ -9,6 +9,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 
@@ -144,4 +145,15 @@ Mesh loop(const Mesh& input) {
   return out.finish();
 }
 
+namespace detail {
+
+SchemeSpec loop_scheme() {
+  return {"loop",
+          "Loop: every triangle into four, on triangle meshes",
+          {},
+          {},
+          [](const Mesh& m, const Params&, Origins*) { return loop(m); }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

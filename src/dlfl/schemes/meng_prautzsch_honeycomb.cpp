@@ -9,6 +9,8 @@
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/schemes/detail/meng_prautzsch_params.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
@@ -124,4 +126,32 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
   return detail::require_convex_result(out.finish(), center, "mp-honeycomb", params.tau, params.ratio);
 }
 
+namespace detail {
+
+SchemeSpec mp_honeycomb_scheme() {
+  const MpHoneycombParams d;
+  std::vector<ParamSpec> params = {
+      param("tau", ParamType::number, d.tau,
+            "where each f-face lies between its old face (0) and the vertex v_F of the region over it (1)")
+          .in_open(0, 1),
+      param("ratio", ParamType::number, d.ratio,
+            "how each edge plane divides the edge's exterior angle, ratio : 1 (1 bisects)")
+          .range(0, std::numeric_limits<double>::infinity(), true, true),
+  };
+  for (ParamSpec& s : mp_shared_param_specs()) params.push_back(std::move(s));
+  return {"mp-honeycomb",
+          "Meng-Prautzsch honeycomb H: convexity-preserving refinement of convex polyhedra by cutting planes",
+          std::move(params),
+          {},
+          [](const Mesh& m, const Params& p, Origins*) {
+            MpHoneycombParams h;
+            h.tau = p.number("tau");
+            h.ratio = p.number("ratio");
+            h.center = mp_center_from(p);
+            h.random = mp_random_from(p);
+            return mp_honeycomb(m, h);
+          }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

@@ -1,10 +1,13 @@
 #include <dlfl/schemes/meng_prautzsch_mixed.h>
 
 #include <cctype>
+#include <limits>
 
 #include <dlfl/errors.h>
 #include <dlfl/analysis/convex_polyhedron.h>
 #include <dlfl/schemes/detail/meng_prautzsch_common.h>
+#include <dlfl/schemes/detail/meng_prautzsch_params.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
@@ -133,4 +136,47 @@ Mesh mhp(const Mesh& input, const MhpParams& params, const MhpStepObserver& obse
   return current;
 }
 
+namespace detail {
+
+SchemeSpec mhp_scheme() {
+  const MhpParams d;
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<ParamSpec> params = {
+      param("pattern", ParamType::text, d.pattern,
+            "the steps in order, H (honeycomb) and P (pushing) with counts and groups: H4P4, (HP)2"),
+      param("tau_h", ParamType::number, d.honeycomb.tau, "tau of the H steps (see mp-honeycomb)")
+          .in_open(0, 1),
+      param("ratio_h", ParamType::number, d.honeycomb.ratio, "ratio of the H steps (see mp-honeycomb)")
+          .range(0, inf, true, true),
+      param("tau_p", ParamType::number, d.pushing.tau, "tau of the P steps (see mp-pushing)").in_open(0, 1),
+      param("ratio_p", ParamType::number, d.pushing.ratio, "ratio of the P steps (see mp-pushing)")
+          .range(0, inf, true, true),
+  };
+  for (ParamSpec& s : mp_shared_param_specs()) params.push_back(std::move(s));
+  return {"mhp", "Meng-Prautzsch mixed honeycomb pushing: a pattern of H and P steps around one centre",
+          std::move(params),
+          // The pattern's grammar needs no mesh: a malformed one is refused before any work.
+          [](const Params&, Params& resolved) {
+            try {
+              expand_mhp_pattern(resolved.text("pattern"));
+            } catch (const ParameterError&) {
+              throw;
+            } catch (const InvalidArgument& e) {
+              throw ParameterError(e.what(), "pattern");
+            }
+          },
+          [](const Mesh& m, const Params& p, Origins*) {
+            MhpParams x;
+            x.pattern = p.text("pattern");
+            x.honeycomb.tau = p.number("tau_h");
+            x.honeycomb.ratio = p.number("ratio_h");
+            x.pushing.tau = p.number("tau_p");
+            x.pushing.ratio = p.number("ratio_p");
+            x.center = mp_center_from(p);
+            x.honeycomb.random = x.pushing.random = mp_random_from(p);
+            return mhp(m, x);
+          }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

@@ -3,11 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <limits>
 #include <vector>
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/schemes/detail/meng_prautzsch_params.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 
@@ -88,4 +91,33 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
   return detail::require_convex_result(out.finish(), center, "mp-pushing", params.tau, params.ratio);
 }
 
+namespace detail {
+
+SchemeSpec mp_pushing_scheme() {
+  const MpPushingParams d;
+  std::vector<ParamSpec> params = {
+      param("tau", ParamType::number, d.tau,
+            "how far each old vertex moves towards the centre, as a fraction of the way to its extreme "
+            "position")
+          .in_open(0, 1),
+      param("ratio", ParamType::number, d.ratio,
+            "where each edge's new point divides it: |from(e) m| : |m to(e)| = ratio : 1 (1: the midpoint)")
+          .range(0, std::numeric_limits<double>::infinity(), true, true),
+  };
+  for (ParamSpec& s : mp_shared_param_specs()) params.push_back(std::move(s));
+  return {"mp-pushing",
+          "Meng-Prautzsch corner pushing P: cut every corner off, push the old vertices towards the centre",
+          std::move(params),
+          {},
+          [](const Mesh& m, const Params& p, Origins*) {
+            MpPushingParams q;
+            q.tau = p.number("tau");
+            q.ratio = p.number("ratio");
+            q.center = mp_center_from(p);
+            q.random = mp_random_from(p);
+            return mp_pushing(m, q);
+          }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

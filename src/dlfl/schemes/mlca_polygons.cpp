@@ -6,6 +6,7 @@
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/detail/quad_split.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
@@ -153,4 +154,15 @@ Mesh mlca(const Mesh& input) {
   return out;
 }
 
+namespace detail {
+
+SchemeSpec mlca_scheme() {
+  return {"mlca",
+          "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed",
+          {},
+          {},
+          [](const Mesh& m, const Params&, Origins*) { return mlca(m); }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

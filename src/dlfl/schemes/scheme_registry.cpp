@@ -1,54 +1,70 @@
-// TEMPORARY adapter over the old registry (registry.h) until every scheme declares its SchemeSpec.
 #include <dlfl/schemes/scheme_registry.h>
+
+#include <algorithm>
 
 #include <dlfl/errors.h>
 #include <dlfl/format.h>
-#include <dlfl/schemes/registry.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
-SchemeParams to_old(const Params& p) {
-  SchemeParams out;
-  for (const auto& [k, v] : p) {
-    switch (v.kind()) {
-      case Value::Kind::text: out[k] = v.as_text(); break;
-      case Value::Kind::boolean: out[k] = v.as_bool() ? 1.0 : 0.0; break;
-      case Value::Kind::point: out[k] = v.to_text(); break;
-      default: out[k] = v.as_number();
-    }
-  }
-  return out;
+
+// Every scheme, once: one line per scheme.
+std::vector<SchemeSpec> all_schemes() {
+  return {
+      detail::catmull_clark_scheme(), detail::doo_sabin_scheme(),
+      detail::dual_scheme(),          detail::dual_honeycomb_dual_scheme(),
+      detail::honeycomb_scheme(),     detail::zhang_wang_honeycomb_scheme(),
+      detail::loop_scheme(),          detail::mhp_scheme(),
+      detail::mlca_scheme(),          detail::mp_honeycomb_scheme(),
+      detail::mp_pushing_scheme(),    detail::sqrt3_scheme(),
+  };
 }
-Params from_old(const SchemeParams& p) {
-  Params out;
-  for (const auto& [k, v] : p) {
-    if (const double* d = std::get_if<double>(&v)) {
-      out[k] = *d;
-    } else {
-      out[k] = std::get<std::string>(v);
-    }
-  }
-  return out;
+
+const std::vector<SchemeSpec>& table() {
+  static const std::vector<SchemeSpec> sorted = [] {
+    std::vector<SchemeSpec> all = all_schemes();
+    std::sort(all.begin(), all.end(),
+              [](const SchemeSpec& a, const SchemeSpec& b) { return a.name < b.name; });
+    return all;
+  }();
+  return sorted;
 }
-void known(std::string_view name) {
-  const auto names = scheme_names();
-  for (const auto& n : names) {
-    if (n == name) return;
+
+}  // namespace
+
+std::span<const SchemeSpec> schemes() { return table(); }
+
+std::vector<std::string> scheme_names() {
+  std::vector<std::string> names;
+  for (const SchemeSpec& s : table()) names.push_back(s.name);
+  return names;
+}
+
+const SchemeSpec& find_scheme(std::string_view name) {
+  for (const SchemeSpec& s : table()) {
+    if (s.name == name) return s;
   }
-  const std::string s = closest_name(name, names);
-  throw UnknownNameError(unknown_name_message("scheme", name, names, s), s);
+  const std::vector<std::string> names = scheme_names();
+  const std::string suggestion = closest_name(name, names);
+  throw UnknownNameError(unknown_name_message("scheme", name, names, suggestion), suggestion);
+}
+
+namespace {
+Params resolve(const SchemeSpec& spec, const Params& given) {
+  Params resolved = resolve_params(spec.name, spec.params, given);
+  if (spec.check) spec.check(given, resolved);
+  return resolved;
 }
 }  // namespace
 
 Params resolve_scheme_params(std::string_view scheme, const Params& given) {
-  known(scheme);
-  return from_old(resolve_scheme_params(std::string(scheme), to_old(given)));
+  return resolve(find_scheme(scheme), given);
 }
 
-Mesh apply_scheme(const Mesh& mesh, std::string_view scheme, const Params& params, Origins*) {
-  known(scheme);
-  const std::string s(scheme);
-  return apply_scheme(mesh, s, resolve_scheme_params(s, to_old(params)));
+Mesh apply_scheme(const Mesh& mesh, std::string_view scheme, const Params& params, Origins* origins) {
+  const SchemeSpec& spec = find_scheme(scheme);
+  return spec.apply(mesh, resolve(spec, params), origins);
 }
 
 }  // namespace dlfl

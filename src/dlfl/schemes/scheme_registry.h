@@ -15,7 +15,8 @@
 
 namespace dlfl {
 
-/// The declaration of one scheme.
+/// The declaration of one scheme. Each scheme's .cpp defines its own (see detail/scheme_table.h); adding a
+/// scheme is one new file plus one line in scheme_registry.cpp.
 struct SchemeSpec {
   std::string name;
   /// One line for listings.
@@ -25,9 +26,15 @@ struct SchemeSpec {
   /// drop defaults that do not apply (honeycomb: a constant `a` replaces a0/a1). `given` is what the caller
   /// passed. Optional.
   std::function<void(const Params& given, Params& resolved)> check;
-  /// One step on `mesh` with resolved parameters. Fills `origins` when it is not null.
+  /// One step on `mesh` with resolved parameters. Fills `origins` when it is not null (see the scheme's
+  /// header for what each output element's origin is).
   std::function<Mesh(const Mesh& mesh, const Params& params, Origins* origins)> apply;
 };
+
+// Deprecated, to be removed once the editor and the operation log are rewritten on Params: the names of the
+// parameter types before the registry. New code uses Params and Value.
+using SchemeParams = Params;
+using ParamValue = Value;
 
 /// Every registered scheme, sorted by name.
 std::span<const SchemeSpec> schemes();

@@ -9,6 +9,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 
@@ -123,4 +124,15 @@ Mesh sqrt3(const Mesh& input) {
   return out.finish();
 }
 
+namespace detail {
+
+SchemeSpec sqrt3_scheme() {
+  return {"sqrt3",
+          "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes",
+          {},
+          {},
+          [](const Mesh& m, const Params&, Origins*) { return sqrt3(m); }};
+}
+
+}  // namespace detail
 }  // namespace dlfl

@@ -8,6 +8,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/schemes/detail/honeycomb_remesh.h>
+#include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
@@ -130,4 +131,42 @@ TensionBounds zhang_wang_eigen_bounds(int n, double b) {
   return {b * (1.0 - c), b * (1.0 + c)};
 }
 
+namespace detail {
+
+SchemeSpec zhang_wang_honeycomb_scheme() {
+  // The tension a is a number, or "symmetric" for the paper's a_n = (4 - cos(2 pi / n)) / 9.
+  constexpr const char* symmetric = "symmetric";
+  const ZhangWangParams d;
+  return {
+      "honeycomb-zw",
+      "Zhang-Wang honeycomb: the honeycomb's topology, every face carrying a central control vertex",
+      {
+          param("a", ParamType::number, symmetric,
+                "the tension a_n of formula (3); 'symmetric': the paper's (4 - cos(2 pi / n)) / 9")
+              .in(0, 1)
+              .one_of({symmetric}),
+          param(
+              "b", ParamType::number, d.b,
+              "b_n of formula (2): each new edge vertex between the face's CCV (0) and the edge midpoint (1)")
+              .in(0, 1),
+          param("c", ParamType::number, d.c,
+                "c_n of formula (4): the CCV of a vertex's new face between the vertex (0) and its "
+                "neighbourhood (1)")
+              .in(0, 1),
+          param("alpha", ParamType::number, d.alpha,
+                "the weight of the neighbours in formula (4); the CCVs around get 1 - alpha")
+              .in(0, 1),
+      },
+      {},
+      [](const Mesh& m, const Params& p, Origins*) {
+        ZhangWangParams z;
+        if (p.get("a").kind() != Value::Kind::text) z.a = p.number("a");  // else the keyword
+        z.b = p.number("b");
+        z.c = p.number("c");
+        z.alpha = p.number("alpha");
+        return zhang_wang_honeycomb(m, z);
+      }};
+}
+
+}  // namespace detail
 }  // namespace dlfl
