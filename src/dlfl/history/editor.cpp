@@ -5,6 +5,7 @@
 #include <dlfl/errors.h>
 #include <dlfl/io/json_mesh.h>
 #include <dlfl/io/mesh_io.h>
+#include <dlfl/schemes/zhang_wang_honeycomb.h>
 
 namespace dlfl {
 namespace {
@@ -142,12 +143,13 @@ void Editor::set_position(VertexId v, const glm::dvec3& position) {
 }
 
 void Editor::set_face_point(FaceId f, const std::optional<glm::dvec3>& control) {
-  Step s{Step::Kind::set_face_point};
-  s.face = f;
-  s.position = control ? *control : glm::dvec3(std::nan(""), 0.0, 0.0);  // a NaN x clears
-  run(s, {{"op", "set_face_point"},
-          {"face", f.index()},
-          {"position", control ? point(*control) : nlohmann::json()}});
+  // A whole-mesh entry: the control point is an attribute now, which no Step sets.
+  Mesh next = mesh_;
+  dlfl::set_face_point(next, f, control);  // throws with the current mesh unchanged
+  std::swap(mesh_, next);
+  push(Entry{{}, std::move(next)}, {{"op", "set_face_point"},
+                                    {"face", f.index()},
+                                    {"position", control ? point(*control) : nlohmann::json()}});
 }
 
 FaceManifold Editor::create_face_manifold(std::span<const glm::dvec3> positions, std::span<VertexId> vertices,
