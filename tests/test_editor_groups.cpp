@@ -113,7 +113,7 @@ TEST_CASE("editor: the undo limit counts groups as one entry each") {
   Editor ed(Editor::Options{false, 2});
   ed.set_mesh(build_mesh(test::cube_soup()));
   for (int i = 0; i < 3; ++i) {
-    ed.begin_group("g" + std::to_string(i));
+    ed.begin_group(std::string("g") + std::to_string(i));
     three_edits(ed);
     ed.end_group();
   }

@@ -62,7 +62,7 @@ Mesh checked_step(const Mesh& m, const ZhangWangParams& p = {}) {
   const auto before = validate(m).components, after = validate(r).components;
   REQUIRE(before.size() == after.size());
   for (std::size_t i = 0; i < before.size(); ++i) CHECK(before[i].genus == after[i].genus);
-  for (FaceId f : r.faces()) CHECK(r.face_point(f).has_value());
+  for (FaceId f : r.faces()) CHECK(face_point(r, f).has_value());
   return r;
 }
 
@@ -70,7 +70,7 @@ Mesh checked_step(const Mesh& m, const ZhangWangParams& p = {}) {
 Mesh face_manifold(const std::vector<glm::dvec3>& points, const glm::dvec3& q, FaceId* front) {
   Mesh m;
   const FaceManifold fm = create_face_manifold(m, points);
-  m.set_face_point(fm.front, q);
+  set_face_point(m, fm.front, q);
   *front = fm.front;
   return m;
 }
@@ -84,7 +84,7 @@ std::vector<glm::dvec3> step_face(const std::vector<glm::dvec3>& points, const g
   HoneycombOrigin origin;
   const Mesh r = zhang_wang_honeycomb(m, p, &origin);
   const FaceId copy = origin.face_of_face[front.index()];
-  std::vector<glm::dvec3> out{*r.face_point(copy)};
+  std::vector<glm::dvec3> out{*face_point(r, copy)};
   for (CornerId c : r.corners(copy)) out.push_back(r.position(r.vertex(c)));
   return out;
 }
@@ -168,7 +168,7 @@ TEST_CASE("zhang-wang: the cube by hand") {
     CHECK(found == 1);
   }
   for (FaceId f : r.faces()) {
-    const glm::dvec3 q = *r.face_point(f);
+    const glm::dvec3 q = *face_point(r, f);
     CAPTURE(f.index());
     if (r.size(f) == 4) {
       CHECK(close(q, centroid(r, f)));
@@ -189,11 +189,11 @@ TEST_CASE("zhang-wang: a raised control point pulls its face as formulas (2) and
   for (FaceId f : m.faces())
     if (close(centroid(m, f), {0, 0, 1})) top = f;
   REQUIRE(top.valid());
-  m.set_face_point(top, glm::dvec3(0, 0, 2));
+  set_face_point(m, top, glm::dvec3(0, 0, 2));
   HoneycombOrigin origin;
   const Mesh r = zhang_wang_honeycomb(m, {}, &origin);
   const FaceId copy = origin.face_of_face[top.index()];
-  CHECK(close(*r.face_point(copy), {0, 0, 14.0 / 9}));
+  CHECK(close(*face_point(r, copy), {0, 0, 14.0 / 9}));
   int raised = 0;
   for (CornerId c : r.corners(copy)) {
     const glm::dvec3 p = r.position(r.vertex(c));
@@ -205,7 +205,7 @@ TEST_CASE("zhang-wang: a raised control point pulls its face as formulas (2) and
   // face's CCV is (1, 1, 1)/2 + ((1, 1, 1) + (1, 1, 2))/12 = (2/3, 2/3, 3/4).
   for (VertexId v : m.vertices()) {
     if (!close(m.position(v), {1, 1, 1})) continue;
-    CHECK(close(*r.face_point(origin.face_of_vertex[v.index()]), {2.0 / 3, 2.0 / 3, 0.75}));
+    CHECK(close(*face_point(r, origin.face_of_vertex[v.index()]), {2.0 / 3, 2.0 / 3, 0.75}));
   }
 }
 
@@ -215,7 +215,7 @@ TEST_CASE("zhang-wang: alpha splits formula (4) between the neighbours and the f
   // (1, 1, 1)/2 + (1, 1, 2)/6 = (2/3, 2/3, 5/6).
   Mesh m = test::cube();
   for (FaceId f : m.faces())
-    if (close(centroid(m, f), {0, 0, 1})) m.set_face_point(f, glm::dvec3(0, 0, 2));
+    if (close(centroid(m, f), {0, 0, 1})) set_face_point(m, f, glm::dvec3(0, 0, 2));
   for (const auto& [alpha, expected] : std::vector<std::pair<double, glm::dvec3>>{
            {1.0, {2.0 / 3, 2.0 / 3, 2.0 / 3}}, {0.0, {2.0 / 3, 2.0 / 3, 5.0 / 6}}}) {
     ZhangWangParams p;
@@ -224,7 +224,7 @@ TEST_CASE("zhang-wang: alpha splits formula (4) between the neighbours and the f
     const Mesh r = zhang_wang_honeycomb(m, p, &origin);
     for (VertexId v : m.vertices())
       if (close(m.position(v), {1, 1, 1}))
-        CHECK(close(*r.face_point(origin.face_of_vertex[v.index()]), expected));
+        CHECK(close(*face_point(r, origin.face_of_vertex[v.index()]), expected));
   }
 }
 
@@ -234,7 +234,7 @@ TEST_CASE("zhang-wang: c = 0 keeps the vertex faces' CCVs on the old vertices") 
   const Mesh m = test::dodecahedron();
   HoneycombOrigin origin;
   const Mesh r = zhang_wang_honeycomb(m, p, &origin);
-  for (VertexId v : m.vertices()) CHECK(*r.face_point(origin.face_of_vertex[v.index()]) == m.position(v));
+  for (VertexId v : m.vertices()) CHECK(*face_point(r, origin.face_of_vertex[v.index()]) == m.position(v));
 }
 
 TEST_CASE("zhang-wang: the matrix of formula (6) read off the code") {
@@ -374,18 +374,18 @@ TEST_CASE("zhang-wang: the parameter bounds of formula (12) and of the eigenvalu
 TEST_CASE("zhang-wang: affine maps commute with the subdivision") {
   Mesh m = test::mixed_polyhedron();
   FaceId some = *m.faces().begin();
-  m.set_face_point(some, glm::dvec3(0.3, -2, 1.5));
+  set_face_point(m, some, glm::dvec3(0.3, -2, 1.5));
   const auto map = [](const glm::dvec3& p) {
     return glm::dvec3(2 * p.x - p.y + 3, 0.5 * p.y + p.z - 1, -p.x + 1.5 * p.z + 0.25);
   };
   Mesh mapped = m;
   for (VertexId v : m.vertices()) mapped.set_position(v, map(m.position(v)));
   for (FaceId f : m.faces())
-    if (auto q = m.face_point(f)) mapped.set_face_point(f, map(*q));
+    if (auto q = face_point(m, f)) set_face_point(mapped, f, map(*q));
   const Mesh r = zhang_wang_honeycomb(m), rm = zhang_wang_honeycomb(mapped);
   REQUIRE(r.vertex_capacity() == rm.vertex_capacity());
   for (VertexId v : r.vertices()) CHECK(close(map(r.position(v)), rm.position(v), 1e-11));
-  for (FaceId f : r.faces()) CHECK(close(map(*r.face_point(f)), *rm.face_point(f), 1e-11));
+  for (FaceId f : r.faces()) CHECK(close(map(*face_point(r, f)), *face_point(rm, f), 1e-11));
 }
 
 TEST_CASE("zhang-wang: hole faces stay holes and point spheres are copied") {
@@ -430,29 +430,34 @@ TEST_CASE("zhang-wang: bad parameters are refused naming them") {
   stuck.a = 0;
   stuck.b = 1;
   CHECK_THROWS_AS(zhang_wang_limit_point(fm, front, stuck), InvalidArgument);
-  CHECK_THROWS_AS(fm.set_face_point(front, glm::dvec3(std::nan(""), 0, 0)), InvalidArgument);
+  CHECK_THROWS_AS(set_face_point(fm, front, glm::dvec3(std::nan(""), 0, 0)), InvalidArgument);
 }
 
 TEST_CASE("face points: JSON round trip and hash") {
   Mesh m = test::cube();
   const std::string plain = mesh_hash(m);
   const FaceId f = *m.faces().begin();
-  m.set_face_point(f, glm::dvec3(0.1, 0.2, 0.3));
+  set_face_point(m, f, glm::dvec3(0.1, 0.2, 0.3));
   CHECK(mesh_hash(m) != plain);
   const Mesh back = mesh_from_json(mesh_to_json(m), "test");
   CHECK(back == m);
-  CHECK(*back.face_point(f) == glm::dvec3(0.1, 0.2, 0.3));
+  CHECK(*face_point(back, f) == glm::dvec3(0.1, 0.2, 0.3));
   CHECK(mesh_hash(back) == mesh_hash(m));
-  m.set_face_point(f, std::nullopt);
+  set_face_point(m, f, std::nullopt);
+  CHECK_FALSE(face_point(m, f).has_value());
+  CHECK(mesh_hash(m) == plain);    // unset points are not hashed, as before they were attributes
+  CHECK_FALSE(m == test::cube());  // but the attribute is there, all NaN
+  m.remove_face_attribute(face_point_attribute);
   CHECK(m == test::cube());
-  CHECK(mesh_hash(m) == plain);
   // A subdivided mesh with a CCV on every face survives the round trip exactly.
   const Mesh r = zhang_wang_honeycomb(test::dodecahedron());
   CHECK(mesh_from_json(mesh_to_json(r), "test") == r);
   // A malformed entry is refused, naming the field.
   auto doc = mesh_to_json(r);
-  doc["face_points"][0] = "up";
-  CHECK_THROWS_WITH_AS(mesh_from_json(doc, "bad"), doctest::Contains("face_points[0]"), IoError);
+  REQUIRE(doc["attributes"].size() == 1);
+  CHECK(doc["attributes"][0]["name"] == "face_point");
+  doc["attributes"][0]["values"][0] = "up";
+  CHECK_THROWS_WITH_AS(mesh_from_json(doc, "bad"), doctest::Contains("attributes[0].values[0]"), IoError);
 }
 
 TEST_CASE("face points: set by the editor undo and redo and replay from the log") {
@@ -463,9 +468,9 @@ TEST_CASE("face points: set by the editor undo and redo and replay from the log"
   ed.subdivide("honeycomb-zw");
   const Mesh after = ed.mesh();
   CHECK(ed.undo());
-  CHECK(*ed.mesh().face_point(f) == glm::dvec3(0, 0, 3));
+  CHECK(*face_point(ed.mesh(), f) == glm::dvec3(0, 0, 3));
   CHECK(ed.undo());
-  CHECK_FALSE(ed.mesh().face_point(f).has_value());
+  CHECK_FALSE(face_point(ed.mesh(), f).has_value());
   CHECK(ed.redo());
   CHECK(ed.redo());
   CHECK(ed.mesh() == after);

@@ -167,6 +167,7 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
   m.live_vertices_ = nv;
   m.live_edges_ = m.edges_.size();
   m.live_faces_ = m.faces_.size();
+  m.live_hole_faces_ = m.count_hole_faces();
   m.live_corners_ = m.corners_.size();
 
   // A manifold vertex has all its corners on one rotation cycle; more than one cycle is a pinch (two cones

@@ -5,7 +5,7 @@
 
 namespace dlfl {
 
-DeleteEdgeResult Mesh::delete_edge(EdgeId e, const Reuse& reuse) {
+DeleteEdgeResult Mesh::delete_edge(EdgeId e, const detail::Reuse& reuse) {
   require(e, "delete_edge");
   if (reuse.face.valid() && (reuse.face.index() >= face_capacity() || is_alive(reuse.face))) {
     throw InvalidArgument("delete_edge: a handle to reuse is not a removed element");
@@ -101,8 +101,8 @@ DeleteEdgeResult Mesh::delete_edge(EdgeId e, const Reuse& reuse) {
   }
 
   const bool keep_u = length_u >= length_w;
-  const FaceId g = new_face(reuse.face);
-  if (!reuse.face.valid()) faces_[g.index()].hole = faces_[f.index()].hole;
+  // A new face copies f's hole flag; a revived one keeps its own.
+  const FaceId g = new_face(reuse.face, faces_[f.index()].hole);
   const CornerId moved_start = keep_u ? start_w : start_u;
   const CornerId f_anchor = first_corner(f);
   const CornerId g_anchor = first_corner(g);  // meaningful only for a revived face

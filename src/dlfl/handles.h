@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <functional>
 #include <string>
+#include <type_traits>
 
 namespace dlfl {
 
@@ -32,11 +33,31 @@ using EdgeId = Handle<struct EdgeTag>;
 using FaceId = Handle<struct FaceTag>;
 using CornerId = Handle<struct CornerTag>;
 
+/// The four element kinds of a mesh, in the order `Mesh::attributes()` sorts them.
+enum class ElementKind : std::uint8_t { vertex, edge, face, corner };
+
+/// The element kind a handle type names: `element_kind_v<FaceId> == ElementKind::face`.
+template <class H>
+inline constexpr ElementKind element_kind_v = ElementKind::vertex;
+template <>
+inline constexpr ElementKind element_kind_v<EdgeId> = ElementKind::edge;
+template <>
+inline constexpr ElementKind element_kind_v<FaceId> = ElementKind::face;
+template <>
+inline constexpr ElementKind element_kind_v<CornerId> = ElementKind::corner;
+
+/// True for the four handle types.
+template <class H>
+inline constexpr bool is_handle_v = std::is_same_v<H, VertexId> || std::is_same_v<H, EdgeId> ||
+                                    std::is_same_v<H, FaceId> || std::is_same_v<H, CornerId>;
+
 /// Short names used in messages: "v12", "e3", "f7", "c40"; "v-" for an invalid handle.
 std::string to_string(VertexId v);
 std::string to_string(EdgeId e);
 std::string to_string(FaceId f);
 std::string to_string(CornerId c);
+/// "vertex", "edge", "face" or "corner".
+const char* to_string(ElementKind kind);
 
 }  // namespace dlfl
 

@@ -12,7 +12,7 @@ bool reusable(const Mesh& m, H h, std::uint32_t capacity) {
 }
 }  // namespace
 
-InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const Reuse& reuse) {
+InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const detail::Reuse& reuse) {
   require(c1, "insert_edge");
   require(c2, "insert_edge");
   const VertexId u = vertex(c1);
@@ -39,8 +39,8 @@ InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const Reuse& reuse)
   InsertEdgeResult result;
   Step& inverse = result.inverse;
   inverse.kind = Step::Kind::delete_edge;
-  // Anchors: insert_edge never moves a vertex's representative (no corner goes away), and a face's first corner
-  // only when a split carries it to the other part; that one case is recorded below.
+  // Anchors: insert_edge never moves a vertex's representative (no corner goes away), and a face's first
+  // corner only when a split carries it to the other part; that one case is recorded below.
 
   // In a split, measure the two parts before relinking: part A = c2 .. a, part B = c1 .. b (original
   // corners).
@@ -103,8 +103,8 @@ InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const Reuse& reuse)
   // Split: the larger part keeps the handle (a tie goes to the part of c1, part B).
   const FaceId f = f1;
   const bool keep_b = length_b >= length_a;
-  const FaceId g = new_face(reuse.face);
-  if (!reuse.face.valid()) faces_[g.index()].hole = faces_[f.index()].hole;
+  // A new face copies f's hole flag; a revived one keeps its own.
+  const FaceId g = new_face(reuse.face, faces_[f.index()].hole);
   const CornerId moved_start = keep_b ? n1 : n2;  // the part that goes to g
   const CornerId kept_corner = keep_b ? c1 : c2;  // an original corner in the part that stays in f
   const CornerId moved_corner = keep_b ? c2 : c1;

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include <dlfl/errors.h>
 
@@ -15,12 +16,63 @@ std::string missing_message(const char* op, H h) {
 }
 }  // namespace
 
+Mesh& Mesh::operator=(Mesh&& other) noexcept {
+  if (this == &other) return *this;
+  positions_ = std::move(other.positions_);
+  vertex_corner_ = std::move(other.vertex_corner_);
+  corners_ = std::move(other.corners_);
+  edges_ = std::move(other.edges_);
+  faces_ = std::move(other.faces_);
+  live_vertices_ = std::exchange(other.live_vertices_, 0);
+  live_edges_ = std::exchange(other.live_edges_, 0);
+  live_faces_ = std::exchange(other.live_faces_, 0);
+  live_hole_faces_ = std::exchange(other.live_hole_faces_, 0);
+  live_corners_ = std::exchange(other.live_corners_, 0);
+  attributes_ = std::move(other.attributes_);
+  // Containers follow the data: the registry comes along and is told its new mesh.
+  listeners_ = std::move(other.listeners_);
+  if (listeners_.registry) listeners_.registry->mesh = this;
+  return *this;
+}
+
+const std::shared_ptr<detail::MeshListeners>& Mesh::listeners() const {
+  if (!listeners_.registry) {
+    listeners_.registry = std::make_shared<detail::MeshListeners>();
+    listeners_.registry->mesh = this;
+  }
+  return listeners_.registry;
+}
+
+std::uint32_t Mesh::capacity(ElementKind kind) const {
+  switch (kind) {
+    case ElementKind::vertex:
+      return vertex_capacity();
+    case ElementKind::edge:
+      return edge_capacity();
+    case ElementKind::face:
+      return face_capacity();
+    case ElementKind::corner:
+      break;
+  }
+  return corner_capacity();
+}
+
 void Mesh::reserve(std::size_t vertices, std::size_t edges, std::size_t faces, std::size_t corners) {
   positions_.reserve(vertices);
   vertex_corner_.reserve(vertices);
   edges_.reserve(edges);
   faces_.reserve(faces);
   corners_.reserve(corners);
+  const std::size_t by_kind[] = {vertices, edges, faces, corners};
+  for (const auto& entry : attributes_.entries()) {
+    entry.column->reserve(by_kind[static_cast<int>(entry.column->kind())]);
+  }
+}
+
+std::size_t Mesh::count_hole_faces() const {
+  std::size_t n = 0;
+  for (const FaceRecord& f : faces_) n += f.alive && f.hole;
+  return n;
 }
 
 std::uint32_t Mesh::valence(VertexId v) const {
@@ -35,7 +87,7 @@ void Mesh::missing(EdgeId e, const char* op) { throw InvalidArgument(missing_mes
 void Mesh::missing(FaceId f, const char* op) { throw InvalidArgument(missing_message(op, f)); }
 void Mesh::missing(CornerId c, const char* op) { throw InvalidArgument(missing_message(op, c)); }
 
-void Mesh::set_anchors(const Reuse& reuse) {
+void Mesh::set_anchors(const detail::Reuse& reuse) {
   // Anchors that no longer fit (the element is gone, or the corner is elsewhere) are ignored: they only
   // choose where iteration starts, never the topology.
   for (const auto& a : reuse.face_anchors) {
@@ -47,14 +99,6 @@ void Mesh::set_anchors(const Reuse& reuse) {
       vertex_corner_[a.vertex.index()] = a.corner;
     }
   }
-}
-
-void Mesh::relabel(CornerId start, FaceId f) {
-  CornerId c = start;
-  do {
-    corners_[c.index()].face = f;
-    c = next(c);
-  } while (c != start);
 }
 
 // ---- simple mutators
@@ -84,34 +128,16 @@ void Mesh::set_vertex_corner(VertexId v, CornerId c) {
   vertex_corner_[v.index()] = c;
 }
 
-glm::dvec3 Mesh::face_point_or_centroid(FaceId f) const {
-  if (auto p = face_point(f)) return *p;
-  glm::dvec3 sum(0.0);
-  for (CornerId c : corners(f)) sum += position(vertex(c));
-  return sum / double(size(f));
-}
-
-void Mesh::set_face_point(FaceId f, const std::optional<glm::dvec3>& point) {
-  require(f, "set_face_point");
-  if (point && !finite(*point)) {
-    throw InvalidArgument("set_face_point: control point of " + to_string(f) + " is not finite");
-  }
-  if (face_points_.empty()) {
-    if (!point) return;
-    face_points_.assign(faces_.size(), glm::dvec3(std::nan(""), 0.0, 0.0));
-  }
-  face_points_[f.index()] = point ? *point : glm::dvec3(std::nan(""), 0.0, 0.0);
-}
-
 void Mesh::set_hole(FaceId f, bool hole) {
   require(f, "set_hole");
+  live_hole_faces_ += std::size_t(hole) - std::size_t(faces_[f.index()].hole);
   faces_[f.index()].hole = hole;
 }
 
 // ---- CREATEVERTEX and its inverse
 // --------------------------------------------------------------------------
 
-VertexId Mesh::create_vertex(const glm::dvec3& position, const Reuse& reuse) {
+VertexId Mesh::create_vertex(const glm::dvec3& position, const detail::Reuse& reuse) {
   if (!finite(position)) throw InvalidArgument("create_vertex: position is not finite");
   if ((reuse.vertex.valid() && (reuse.vertex.index() >= vertex_capacity() || is_alive(reuse.vertex))) ||
       (reuse.face.valid() && (reuse.face.index() >= face_capacity() || is_alive(reuse.face))) ||
@@ -120,19 +146,18 @@ VertexId Mesh::create_vertex(const glm::dvec3& position, const Reuse& reuse) {
     throw InvalidArgument("create_vertex: a handle to reuse is not a removed element");
   }
   VertexId v = new_vertex(reuse.vertex);
-  FaceId f = new_face(reuse.face);
+  FaceId f = new_face(reuse.face, false);
   CornerId c = new_corner(reuse.corners[0]);
   positions_[v.index()] = position;
   vertex_corner_[v.index()] = c;
   corners_[c.index()] = {v, f, c, c, EdgeId()};
   faces_[f.index()].corner = c;
   faces_[f.index()].size = 1;
-  if (!reuse.face.valid()) faces_[f.index()].hole = false;
   apply_anchors(reuse);
   return v;
 }
 
-void Mesh::delete_vertex(VertexId v, const Reuse& reuse) {
+void Mesh::delete_vertex(VertexId v, const detail::Reuse& reuse) {
   require(v, "delete_vertex");
   if (!is_point_sphere(v)) {
     throw TopologyError("delete_vertex: " + to_string(v) + " has edges; only a point sphere can be deleted");
@@ -200,13 +225,12 @@ Step Mesh::apply(const Step& step) {
       unsubdivide_edge(step.vertex, step.reuse);
       return inverse;
     }
-    case Step::Kind::set_face_point: {
-      require(step.face, "set_face_point");
-      inverse.kind = Step::Kind::set_face_point;
+    case Step::Kind::set_hole: {
+      require(step.face, "set_hole");
+      inverse.kind = Step::Kind::set_hole;
       inverse.face = step.face;
-      const auto old = face_point(step.face);
-      inverse.position = old ? *old : glm::dvec3(std::nan(""), 0.0, 0.0);
-      set_face_point(step.face, std::isnan(step.position.x) ? std::nullopt : std::optional(step.position));
+      inverse.hole = is_hole(step.face);
+      set_hole(step.face, step.hole);
       return inverse;
     }
     case Step::Kind::set_position: {
@@ -261,7 +285,6 @@ Mesh::CompactMap Mesh::compact() {
     FaceRecord r = faces_[i];
     r.corner = map.corners[r.corner.index()];
     faces_[to.index()] = r;
-    if (!face_points_.empty()) face_points_[to.index()] = face_points_[i];
   }
   for (std::uint32_t i = 0; i < map.corners.size(); ++i) {
     const CornerId to = map.corners[i];
@@ -275,8 +298,9 @@ Mesh::CompactMap Mesh::compact() {
   vertex_corner_.resize(live_vertices_);
   edges_.resize(live_edges_);
   faces_.resize(live_faces_);
-  if (!face_points_.empty()) face_points_.resize(live_faces_);
   corners_.resize(live_corners_);
+  attributes_.remap(map);
+  if (listeners_.registry) listeners_.registry->compact(map);
   return map;
 }
 
@@ -313,8 +337,6 @@ bool operator==(const Mesh& a, const Mesh& b) {
     const auto& x = a.faces_[f.index()];
     const auto& y = b.faces_[f.index()];
     if (x.corner != y.corner || x.size != y.size || x.hole != y.hole) return false;
-    const auto p = a.face_point(f), q = b.face_point(f);
-    if (p.has_value() != q.has_value() || (p && std::memcmp(&*p, &*q, sizeof(glm::dvec3)) != 0)) return false;
   }
   for (CornerId c : a.corners()) {
     const auto& x = a.corners_[c.index()];
@@ -324,7 +346,7 @@ bool operator==(const Mesh& a, const Mesh& b) {
       return false;
     }
   }
-  return true;
+  return Mesh::same_attributes(a, b);
 }
 
 }  // namespace dlfl

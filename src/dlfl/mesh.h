@@ -4,22 +4,30 @@
 // conventions.
 
 #include <array>
-#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <glm/vec3.hpp>
+#include <memory>
 #include <optional>
+#include <string_view>
 #include <vector>
 
-#include <dlfl/handles.h>
+#include <dlfl/attribute_types.h>
+#include <dlfl/attributes.h>
+#include <dlfl/compact_map.h>
+#include <dlfl/detail/attribute_set.h>
 #include <dlfl/detail/large_allocator.h>
+#include <dlfl/detail/mesh_listeners.h>
+#include <dlfl/handles.h>
 
 namespace dlfl {
 
+namespace detail {
 /// Handles of removed elements that an operator brings back instead of appending new ones, plus "anchors" (a
 /// face's first corner, a vertex's representative corner) to set when it finishes. This is how the inverse of
 /// an operator restores a mesh with the very same handles; every operator returns a `Step` whose `reuse` is
-/// filled in that way. Unset (invalid) fields mean "append new elements" and "no anchor to set".
+/// filled in that way. Unset (invalid) fields mean "append new elements" and "no anchor to set". Internal to
+/// `Mesh::apply`: the public operators always append.
 struct Reuse {
   /// Corners to bring back, in the order the operator documents.
   std::array<CornerId, 2> corners{};
@@ -40,6 +48,14 @@ struct Reuse {
   std::array<VertexAnchor, 2> vertex_anchors{};
 };
 
+/// "Append new elements, set no anchor": what the public operators pass.
+inline constexpr Reuse no_reuse{};
+
+/// How the two corner circulators step (see `CornerCycle`).
+struct AlongFace;
+struct AroundVertex;
+}  // namespace detail
+
 /// One Euler operator with its arguments, as a value. `Mesh::apply` runs it and returns the exact inverse.
 struct Step {
   enum class Kind : std::uint8_t {
@@ -50,7 +66,7 @@ struct Step {
     subdivide_edge,    ///< uses edge, position
     unsubdivide_edge,  ///< uses vertex
     set_position,      ///< uses vertex, position
-    set_face_point,    ///< uses face, position (a NaN x clears the point)
+    set_hole,          ///< uses face, hole
   };
   Kind kind = Kind::create_vertex;
   VertexId vertex{};
@@ -59,7 +75,8 @@ struct Step {
   CornerId corner1{};
   CornerId corner2{};
   glm::dvec3 position{0.0};
-  Reuse reuse{};
+  bool hole = false;
+  detail::Reuse reuse{};
 };
 
 /// What `insert_edge` did. `split()` tells which of the two cases happened.
@@ -78,6 +95,11 @@ struct DeleteEdgeResult {
   Step inverse;         ///< applying this restores the mesh exactly
 };
 
+template <class Advance>
+class CornerCycle;
+template <class H, class T>
+class MeshData;
+
 /// A closed orientable 2-manifold in DLFL form.
 ///
 /// Storage is contiguous arrays addressed by 32-bit handles. Removing an element leaves a tombstone: handles
@@ -87,16 +109,33 @@ struct DeleteEdgeResult {
 /// Element accessors (`vertex(c)`, `next(c)`, ...) do not check their argument: it must be a live handle (see
 /// `is_alive`). Every operator checks its preconditions and throws `InvalidArgument` or `TopologyError`,
 /// leaving the mesh unchanged.
+///
+/// Named attributes (`add_vertex_attribute` and friends) and attached containers (`MeshData`, see
+/// dlfl/mesh_data.h) hold values per element; see docs/kernel.md for how they follow the operators.
 class Mesh {
  public:
   Mesh() = default;
+  /// Copies every element and attribute. Containers attached to `other` are not attached to the copy.
+  Mesh(const Mesh& other) = default;
+  /// As the copy constructor; containers attached to this mesh's old data detach.
+  Mesh& operator=(const Mesh& other) = default;
+  /// Takes the data, attributes and attached containers of `other`, which is left empty.
+  Mesh(Mesh&& other) noexcept : Mesh() { *this = std::move(other); }
+  /// As the move constructor; containers attached to this mesh's old data detach.
+  Mesh& operator=(Mesh&& other) noexcept;
 
   // ---- sizes
   // -------------------------------------------------------------------------------------------------
 
   std::size_t num_vertices() const { return live_vertices_; }
   std::size_t num_edges() const { return live_edges_; }
+  /// Every live face: surface faces, hole faces and the faces of point spheres alike.
   std::size_t num_faces() const { return live_faces_; }
+  /// The live faces flagged as holes (the boundary loops of an open mesh, see `is_hole`).
+  std::size_t num_hole_faces() const { return live_hole_faces_; }
+  /// The live faces that are not holes (point-sphere faces included): the faces a polygon file would get,
+  /// point spheres aside. `surface_faces(mesh)` (dlfl/navigation.h) iterates them.
+  std::size_t num_surface_faces() const { return live_faces_ - live_hole_faces_; }
   std::size_t num_corners() const { return live_corners_; }
   bool empty() const { return live_vertices_ == 0; }
 
@@ -105,8 +144,11 @@ class Mesh {
   std::uint32_t edge_capacity() const { return static_cast<std::uint32_t>(edges_.size()); }
   std::uint32_t face_capacity() const { return static_cast<std::uint32_t>(faces_.size()); }
   std::uint32_t corner_capacity() const { return static_cast<std::uint32_t>(corners_.size()); }
+  /// The capacity of one element kind.
+  std::uint32_t capacity(ElementKind kind) const;
 
-  /// Reserve room for this many elements of each type in total (live plus removed), to avoid regrowth.
+  /// Reserve room for this many elements of each type in total (live plus removed), to avoid regrowth; the
+  /// named attributes reserve as much.
   void reserve(std::size_t vertices, std::size_t edges, std::size_t faces, std::size_t corners);
 
   // ---- liveness
@@ -148,17 +190,6 @@ class Mesh {
   std::uint32_t size(FaceId f) const { return faces_[f.index()].size; }
   /// Hole faces stand for the boundary loops of an open mesh; writers omit them.
   bool is_hole(FaceId f) const { return faces_[f.index()].hole; }
-  /// The face's control point (the central control vertex of Zhang-Wang honeycomb subdivision), if one was
-  /// set. Faces made by operators and by most schemes have none; `face_point_or_centroid` then gives the
-  /// centroid.
-  std::optional<glm::dvec3> face_point(FaceId f) const {
-    if (face_points_.empty() || std::isnan(face_points_[f.index()].x)) return std::nullopt;
-    return face_points_[f.index()];
-  }
-  /// The control point if set, else the centroid of the face's vertices.
-  glm::dvec3 face_point_or_centroid(FaceId f) const;
-  /// True if any face, live or removed, carries a control point.
-  bool has_face_points() const { return !face_points_.empty(); }
 
   // ---- navigation, O(1) per step
   // ----------------------------------------------------------------------------
@@ -190,30 +221,35 @@ class Mesh {
 
   template <class H>
   class LiveRange;
-  class FaceCorners;
-  class VertexCorners;
+  using FaceCorners = CornerCycle<detail::AlongFace>;
+  using VertexCorners = CornerCycle<detail::AroundVertex>;
 
   /// Live handles in increasing order.
   LiveRange<VertexId> vertices() const;
   LiveRange<EdgeId> edges() const;
   LiveRange<FaceId> faces() const;
   LiveRange<CornerId> corners() const;
+  /// The live handles of one kind: `elements<FaceId>()` is `faces()`.
+  template <class H>
+  LiveRange<H> elements() const {
+    return {this, capacity(element_kind_v<H>)};
+  }
   /// The corners of a face, from its first corner along `next`.
   FaceCorners corners(FaceId f) const;
   /// The corners at a vertex, from its representative corner along `next_around_vertex`.
   VertexCorners corners(VertexId v) const;
+  // More in dlfl/navigation.h: neighbours, the vertices and faces around a face or a vertex, find_edge.
 
   // ---- Euler operators
   // ---------------------------------------------------------------------------------------
 
   /// CREATEVERTEX (MVFS): a new point sphere, one vertex with one face of one corner and no edge. The vertex,
-  /// face and corner are appended (or brought back from `reuse.vertex`, `reuse.face`, `reuse.corners[0]`).
-  /// Throws InvalidArgument on a non-finite position.
-  VertexId create_vertex(const glm::dvec3& position, const Reuse& reuse = {});
+  /// face and corner are appended, in that order. Throws InvalidArgument on a non-finite position.
+  VertexId create_vertex(const glm::dvec3& position) { return create_vertex(position, detail::no_reuse); }
 
   /// Inverse of `create_vertex`: removes a point sphere (vertex, face, corner). Throws TopologyError if the
   /// vertex has edges.
-  void delete_vertex(VertexId v, const Reuse& reuse = {});
+  void delete_vertex(VertexId v) { delete_vertex(v, detail::no_reuse); }
 
   /// INSERTEDGE: a new edge from vertex(c1) to vertex(c2), drawn inside the angle of corner c1 and the angle
   /// of corner c2.
@@ -233,37 +269,40 @@ class Mesh {
   ///   keeps it). The new face copies the hole flag. Merge: the larger face survives (on a tie the face of
   ///   c1) and the other is removed. A face's first corner stays unless it moved to the other part; then it
   ///   becomes c1 or c2, whichever lies in the face.
-  /// - New handles are appended in the order n1, n2, edge, face (or taken from `reuse.corners`, `reuse.edge`,
-  ///   `reuse.face`).
+  /// - New handles are appended in the order n1, n2, edge, face.
   ///
   /// Cost O(1) plus the size of the smaller face involved. Throws InvalidArgument for a removed corner, and
   /// TopologyError if both corners are at the same vertex (a self-loop).
-  InsertEdgeResult insert_edge(CornerId c1, CornerId c2, const Reuse& reuse = {});
+  InsertEdgeResult insert_edge(CornerId c1, CornerId c2) { return insert_edge(c1, c2, detail::no_reuse); }
 
   /// DELETEEDGE, the inverse of `insert_edge`. If the edge has different faces on its two sides they merge
   /// into one (the larger survives; on a tie face(corner(e,1))). If it has the same face on both sides that
   /// face splits in two (the larger part keeps the handle; on a tie the part continuing at from(e)), which
   /// may separate a component or lower the genus; an end vertex left with no edge becomes a point sphere,
   /// keeping its corner. Cost O(1) plus the size of the smaller face involved.
-  DeleteEdgeResult delete_edge(EdgeId e, const Reuse& reuse = {});
+  DeleteEdgeResult delete_edge(EdgeId e) { return delete_edge(e, detail::no_reuse); }
 
   /// Puts a new vertex at `position` on edge e. Edge e keeps running from from(e) to the new vertex, a new
   /// edge runs from the new vertex to the old to(e); both faces grow by one corner. Appends, in order: the
-  /// vertex, corner on side 0, corner on side 1, edge (or takes them from `reuse`). O(1). Returns the new
-  /// vertex.
-  VertexId subdivide_edge(EdgeId e, const glm::dvec3& position, const Reuse& reuse = {});
+  /// vertex, corner on side 0, corner on side 1, edge. O(1). Returns the new vertex.
+  VertexId subdivide_edge(EdgeId e, const glm::dvec3& position) {
+    return subdivide_edge(e, position, detail::no_reuse);
+  }
 
   /// Inverse of `subdivide_edge`: removes a vertex of valence 2 and joins its two edges into one. The two
   /// edges must continue each other the way `subdivide_edge` leaves them: one arrives at v on its side 0 (it
   /// is kept, now running to the far end of the other), the other leaves v on its side 0 (it is removed).
   /// Throws TopologyError otherwise, or if both neighbours are the same vertex (the result would be a
   /// self-loop).
-  void unsubdivide_edge(VertexId v, const Reuse& reuse = {});
+  void unsubdivide_edge(VertexId v) { unsubdivide_edge(v, detail::no_reuse); }
 
   /// Moves a vertex. Throws InvalidArgument on a non-finite position.
   void set_position(VertexId v, const glm::dvec3& position);
 
   /// Runs one operator given as a value and returns its exact inverse (`apply(apply(s))` restores the mesh).
+  /// The step's `reuse` brings back removed elements under their old handles, which is how inverses restore
+  /// a mesh exactly; named attributes and attached containers are not touched (a revived element finds the
+  /// values it had).
   Step apply(const Step& step);
 
   // ---- anchors and flags (no effect on topology)
@@ -273,26 +312,137 @@ class Mesh {
   void set_first_corner(FaceId f, CornerId c);
   /// Makes c the vertex's representative corner (where rotation starts).
   void set_vertex_corner(VertexId v, CornerId c);
+  /// Flags a face as a hole (a boundary loop) or as a surface face. Throws InvalidArgument for a removed
+  /// face.
   void set_hole(FaceId f, bool hole);
-  /// Sets (or, with `std::nullopt`, clears) a face's control point. Throws InvalidArgument for a removed face
-  /// or a non-finite point. A removed face keeps its point, so bringing the face back restores it.
-  void set_face_point(FaceId f, const std::optional<glm::dvec3>& point);
+
+  // ---- named attributes
+  // --------------------------------------------------------------------------------------
+  //
+  // Values of type bool, int, double or glm::dvec3 per vertex, edge, face or corner, under a name (unique per
+  // element kind). Every element reads the attribute's default until given a value; storage grows only when
+  // a value is written, so the operators never pay for attributes. A removed element keeps its value, so an
+  // inverse step that brings it back brings the value back. `compact()` moves values with their elements,
+  // copying a mesh copies them, `operator==` and `mesh_hash` compare them. Schemes build new meshes without
+  // the input's attributes. Reading (const access) is safe from many threads; writing is not.
+
+  /// Adds an attribute of values T on the elements H (VertexId, EdgeId, FaceId or CornerId) and returns it.
+  /// If one of that name and kind exists with type T it is returned unchanged (default included). Throws
+  /// InvalidArgument for an empty name or if the name exists with another type.
+  template <class H, class T>
+  Attribute<H, T> add_attribute(std::string_view name, const T& default_value = T());
+  /// The attribute of that name on the elements H. Throws InvalidArgument naming the name and type if there
+  /// is none or it has another type.
+  template <class H, class T>
+  Attribute<H, T> attribute(std::string_view name);
+  template <class H, class T>
+  ConstAttribute<H, T> attribute(std::string_view name) const;
+  /// As `attribute`, but `std::nullopt` if there is none; still throws if it has another type.
+  template <class H, class T>
+  std::optional<Attribute<H, T>> find_attribute(std::string_view name);
+  template <class H, class T>
+  std::optional<ConstAttribute<H, T>> find_attribute(std::string_view name) const;
+  /// True if the elements H have an attribute of that name (of any type).
+  template <class H>
+  bool has_attribute(std::string_view name) const {
+    return has_attribute(element_kind_v<H>, name);
+  }
+  /// Removes the attribute (its handles dangle). Throws InvalidArgument if there is none.
+  template <class H>
+  void remove_attribute(std::string_view name) {
+    remove_attribute(element_kind_v<H>, name);
+  }
+
+  // The same per element kind: `auto w = mesh.add_vertex_attribute<double>("weight", 0.0); w[v] = 2;`.
+  template <class T>
+  VertexAttribute<T> add_vertex_attribute(std::string_view name, const T& default_value = T()) {
+    return add_attribute<VertexId, T>(name, default_value);
+  }
+  template <class T>
+  EdgeAttribute<T> add_edge_attribute(std::string_view name, const T& default_value = T()) {
+    return add_attribute<EdgeId, T>(name, default_value);
+  }
+  template <class T>
+  FaceAttribute<T> add_face_attribute(std::string_view name, const T& default_value = T()) {
+    return add_attribute<FaceId, T>(name, default_value);
+  }
+  template <class T>
+  CornerAttribute<T> add_corner_attribute(std::string_view name, const T& default_value = T()) {
+    return add_attribute<CornerId, T>(name, default_value);
+  }
+  template <class T>
+  VertexAttribute<T> vertex_attribute(std::string_view name) {
+    return attribute<VertexId, T>(name);
+  }
+  template <class T>
+  ConstAttribute<VertexId, T> vertex_attribute(std::string_view name) const {
+    return attribute<VertexId, T>(name);
+  }
+  template <class T>
+  EdgeAttribute<T> edge_attribute(std::string_view name) {
+    return attribute<EdgeId, T>(name);
+  }
+  template <class T>
+  ConstAttribute<EdgeId, T> edge_attribute(std::string_view name) const {
+    return attribute<EdgeId, T>(name);
+  }
+  template <class T>
+  FaceAttribute<T> face_attribute(std::string_view name) {
+    return attribute<FaceId, T>(name);
+  }
+  template <class T>
+  ConstAttribute<FaceId, T> face_attribute(std::string_view name) const {
+    return attribute<FaceId, T>(name);
+  }
+  template <class T>
+  CornerAttribute<T> corner_attribute(std::string_view name) {
+    return attribute<CornerId, T>(name);
+  }
+  template <class T>
+  ConstAttribute<CornerId, T> corner_attribute(std::string_view name) const {
+    return attribute<CornerId, T>(name);
+  }
+  bool has_vertex_attribute(std::string_view name) const { return has_attribute(ElementKind::vertex, name); }
+  bool has_edge_attribute(std::string_view name) const { return has_attribute(ElementKind::edge, name); }
+  bool has_face_attribute(std::string_view name) const { return has_attribute(ElementKind::face, name); }
+  bool has_corner_attribute(std::string_view name) const { return has_attribute(ElementKind::corner, name); }
+  void remove_vertex_attribute(std::string_view name) { remove_attribute(ElementKind::vertex, name); }
+  void remove_edge_attribute(std::string_view name) { remove_attribute(ElementKind::edge, name); }
+  void remove_face_attribute(std::string_view name) { remove_attribute(ElementKind::face, name); }
+  void remove_corner_attribute(std::string_view name) { remove_attribute(ElementKind::corner, name); }
+
+  // Type-erased access, for code that handles attributes it does not know (undo, file formats). Element
+  // indices are handle indices: any slot below `capacity(kind)`, live or removed.
+
+  /// Every attribute, sorted by (kind, name).
+  std::vector<AttributeInfo> attributes() const;
+  /// True if elements of `kind` have an attribute of that name.
+  bool has_attribute(ElementKind kind, std::string_view name) const;
+  /// Adds an attribute whose type is that of `default_value`. Nothing happens if it exists with that type;
+  /// throws InvalidArgument for an empty name or if it exists with another type.
+  void add_attribute(ElementKind kind, std::string_view name, const AttributeValue& default_value);
+  /// Throws InvalidArgument if there is no such attribute.
+  void remove_attribute(ElementKind kind, std::string_view name);
+  /// The value of slot `index`. Throws InvalidArgument for a missing attribute or an index not below
+  /// `capacity(kind)`.
+  AttributeValue attribute_value(ElementKind kind, std::string_view name, std::uint32_t index) const;
+  /// Sets the value of slot `index`. Throws InvalidArgument for a missing attribute, an index not below
+  /// `capacity(kind)`, or a value of another type than the attribute's.
+  void set_attribute_value(ElementKind kind, std::string_view name, std::uint32_t index,
+                           const AttributeValue& value);
 
   // ---- maintenance
   // -------------------------------------------------------------------------------------------
 
   /// Old-to-new handle maps returned by `compact` (invalid for removed elements).
-  struct CompactMap {
-    std::vector<VertexId> vertices;
-    std::vector<EdgeId> edges;
-    std::vector<FaceId> faces;
-    std::vector<CornerId> corners;
-  };
-  /// Drops removed elements and renumbers the live ones densely, keeping their relative order. O(size).
+  using CompactMap = dlfl::CompactMap;
+  /// Drops removed elements and renumbers the live ones densely, keeping their relative order. Named
+  /// attributes and attached containers move their values along. O(size).
   CompactMap compact();
 
   /// Element-by-element equality: the same live handles, and for each the same data (positions bit for bit,
-  /// links, anchors, face sizes and hole flags). Removed elements are ignored.
+  /// links, anchors, face sizes and hole flags); the same attributes (names, kinds, types and defaults) with
+  /// the same values on live elements (bit for bit, any NaN equal to any NaN). Removed elements are ignored.
   friend bool operator==(const Mesh& a, const Mesh& b);
 
  private:
@@ -317,6 +467,16 @@ class Mesh {
   friend struct MeshArrays;
   friend class MeshAssembler;
   friend struct MeshTestAccess;  // lets the test suite corrupt a mesh to prove the validator catches it
+  template <class, class>
+  friend class MeshData;
+
+  // The operators with the handles to bring back (see detail::Reuse); `apply` runs inverses through these.
+  VertexId create_vertex(const glm::dvec3& position, const detail::Reuse& reuse);
+  void delete_vertex(VertexId v, const detail::Reuse& reuse);
+  InsertEdgeResult insert_edge(CornerId c1, CornerId c2, const detail::Reuse& reuse);
+  DeleteEdgeResult delete_edge(EdgeId e, const detail::Reuse& reuse);
+  VertexId subdivide_edge(EdgeId e, const glm::dvec3& position, const detail::Reuse& reuse);
+  void unsubdivide_edge(VertexId v, const detail::Reuse& reuse);
 
   // Precondition checks: inline fast path, out-of-line throw.
   template <class H>
@@ -343,14 +503,16 @@ class Mesh {
     edges_.emplace_back();
     return EdgeId(static_cast<std::uint32_t>(edges_.size() - 1));
   }
-  FaceId new_face(FaceId reuse) {
+  // A revived face keeps its hole flag; a new one gets `hole`.
+  FaceId new_face(FaceId reuse, bool hole) {
     ++live_faces_;
     if (reuse.valid()) {
       faces_[reuse.index()].alive = true;
+      live_hole_faces_ += faces_[reuse.index()].hole;
       return reuse;
     }
-    faces_.push_back({CornerId(), 0, true, false});
-    if (!face_points_.empty()) face_points_.emplace_back(std::nan(""), 0.0, 0.0);
+    faces_.push_back({CornerId(), 0, true, hole});
+    live_hole_faces_ += hole;
     return FaceId(static_cast<std::uint32_t>(faces_.size() - 1));
   }
   VertexId new_vertex(VertexId reuse) {
@@ -371,37 +533,49 @@ class Mesh {
   void kill(FaceId f) {
     faces_[f.index()].alive = false;  // corner and hole flag stay, for a later revival
     --live_faces_;
+    live_hole_faces_ -= faces_[f.index()].hole;
   }
   void kill(VertexId v) {
     vertex_corner_[v.index()] = CornerId();
     --live_vertices_;
   }
-  void apply_anchors(const Reuse& reuse) {
+  void apply_anchors(const detail::Reuse& reuse) {
     if (reuse.face_anchors[0].face.valid() || reuse.face_anchors[1].face.valid() ||
         reuse.vertex_anchors[0].vertex.valid() || reuse.vertex_anchors[1].vertex.valid()) [[unlikely]] {
       set_anchors(reuse);
     }
   }
-  void set_anchors(const Reuse& reuse);
+  void set_anchors(const detail::Reuse& reuse);
   void link(CornerId a, CornerId b) {
     corners_[a.index()].next = b;
     corners_[b.index()].prev = a;
   }
-  void relabel(CornerId start, FaceId f);  // face of every corner on the cycle of start
-  // Walks the cycles starting at a and at b at the same pace; returns true if the one from a is no longer.
-  bool cycle_not_longer(CornerId a, CornerId b, std::uint32_t& length_a, std::uint32_t& length_b) const;
+  // The live hole faces, counted from scratch: for the builders that write the arrays directly.
+  std::size_t count_hole_faces() const;
+
+  // Attribute lookup shared by the typed and the type-erased API. `find_column` gives null for a missing
+  // attribute and throws InvalidArgument for one of another type; `add_column` adds or returns it.
+  detail::AttributeColumn* find_column(ElementKind kind, std::string_view name, AttributeType type) const;
+  detail::AttributeColumn& column(ElementKind kind, std::string_view name, AttributeType type) const;
+  detail::AttributeColumn& add_column(ElementKind kind, std::string_view name, const AttributeValue& value);
+  static bool same_attributes(const Mesh& a, const Mesh& b);  // for operator==, once the elements agree
+
+  // The registry of attached containers, created on first use (see detail/mesh_listeners.h).
+  const std::shared_ptr<detail::MeshListeners>& listeners() const;
 
   detail::LargeVector<glm::dvec3> positions_;
   detail::LargeVector<CornerId> vertex_corner_;  // invalid for a removed vertex
   detail::LargeVector<CornerRecord> corners_;
   detail::LargeVector<EdgeRecord> edges_;
   detail::LargeVector<FaceRecord> faces_;
-  // Control points by face handle: empty until the first is set, then one slot per face (NaN x = unset).
-  detail::LargeVector<glm::dvec3> face_points_;
   std::size_t live_vertices_ = 0;
   std::size_t live_edges_ = 0;
   std::size_t live_faces_ = 0;
+  std::size_t live_hole_faces_ = 0;
   std::size_t live_corners_ = 0;
+  detail::AttributeSet attributes_;
+  mutable detail::ListenerSlot listeners_;
+  // (The move assignment in mesh.cpp lists every member: add new ones there too.)
 };
 
 // ---- ranges
@@ -449,8 +623,11 @@ class Mesh::LiveRange {
   std::uint32_t end_;
 };
 
-/// Corners of a face in order; a circulator that stops after one full turn.
-class Mesh::FaceCorners {
+/// The corners met by stepping from a first corner until it comes round again: the corners of a face
+/// (`detail::AlongFace`, along `next`) or around a vertex (`detail::AroundVertex`, along
+/// `next_around_vertex`). An invalid first corner gives an empty cycle.
+template <class Advance>
+class CornerCycle {
  public:
   class iterator {
    public:
@@ -460,7 +637,7 @@ class Mesh::FaceCorners {
     iterator(const Mesh* mesh, CornerId c, bool done) : mesh_(mesh), first_(c), c_(c), done_(done) {}
     CornerId operator*() const { return c_; }
     iterator& operator++() {
-      c_ = mesh_->next(c_);
+      c_ = Advance::step(*mesh_, c_);
       done_ = c_ == first_;
       return *this;
     }
@@ -476,8 +653,8 @@ class Mesh::FaceCorners {
     CornerId first_, c_;
     bool done_ = true;
   };
-  FaceCorners(const Mesh* mesh, CornerId first) : mesh_(mesh), first_(first) {}
-  iterator begin() const { return iterator(mesh_, first_, false); }
+  CornerCycle(const Mesh* mesh, CornerId first) : mesh_(mesh), first_(first) {}
+  iterator begin() const { return iterator(mesh_, first_, !first_.valid()); }
   iterator end() const { return iterator(mesh_, first_, true); }
 
  private:
@@ -485,41 +662,14 @@ class Mesh::FaceCorners {
   CornerId first_;
 };
 
-/// Corners around a vertex in rotation order; stops after one full turn.
-class Mesh::VertexCorners {
- public:
-  class iterator {
-   public:
-    using value_type = CornerId;
-    using difference_type = std::ptrdiff_t;
-    iterator() = default;
-    iterator(const Mesh* mesh, CornerId c, bool done) : mesh_(mesh), first_(c), c_(c), done_(done) {}
-    CornerId operator*() const { return c_; }
-    iterator& operator++() {
-      c_ = mesh_->next_around_vertex(c_);
-      done_ = c_ == first_;
-      return *this;
-    }
-    iterator operator++(int) {
-      iterator old = *this;
-      ++*this;
-      return old;
-    }
-    bool operator==(const iterator& o) const { return done_ == o.done_ && (done_ || c_ == o.c_); }
-
-   private:
-    const Mesh* mesh_ = nullptr;
-    CornerId first_, c_;
-    bool done_ = true;
-  };
-  VertexCorners(const Mesh* mesh, CornerId first) : mesh_(mesh), first_(first) {}
-  iterator begin() const { return iterator(mesh_, first_, false); }
-  iterator end() const { return iterator(mesh_, first_, true); }
-
- private:
-  const Mesh* mesh_;
-  CornerId first_;
+namespace detail {
+struct AlongFace {
+  static CornerId step(const Mesh& mesh, CornerId c) { return mesh.next(c); }
 };
+struct AroundVertex {
+  static CornerId step(const Mesh& mesh, CornerId c) { return mesh.next_around_vertex(c); }
+};
+}  // namespace detail
 
 inline Mesh::LiveRange<VertexId> Mesh::vertices() const { return {this, vertex_capacity()}; }
 inline Mesh::LiveRange<EdgeId> Mesh::edges() const { return {this, edge_capacity()}; }
@@ -527,5 +677,50 @@ inline Mesh::LiveRange<FaceId> Mesh::faces() const { return {this, face_capacity
 inline Mesh::LiveRange<CornerId> Mesh::corners() const { return {this, corner_capacity()}; }
 inline Mesh::FaceCorners Mesh::corners(FaceId f) const { return {this, first_corner(f)}; }
 inline Mesh::VertexCorners Mesh::corners(VertexId v) const { return {this, corner(v)}; }
+
+// ---- attribute templates
+// -----------------------------------------------------------------------------------------
+
+template <class H, class T>
+Attribute<H, T> Mesh::add_attribute(std::string_view name, const T& default_value) {
+  static_assert(is_handle_v<H> && is_attribute_type_v<T>,
+                "attributes: H a handle type, T bool/int/double/dvec3");
+  return Attribute<H, T>(static_cast<detail::TypedColumn<H, T>*>(
+      &add_column(element_kind_v<H>, name, AttributeValue(default_value))));
+}
+
+template <class H, class T>
+Attribute<H, T> Mesh::attribute(std::string_view name) {
+  static_assert(is_handle_v<H> && is_attribute_type_v<T>,
+                "attributes: H a handle type, T bool/int/double/dvec3");
+  return Attribute<H, T>(
+      static_cast<detail::TypedColumn<H, T>*>(&column(element_kind_v<H>, name, attribute_type_v<T>)));
+}
+
+template <class H, class T>
+ConstAttribute<H, T> Mesh::attribute(std::string_view name) const {
+  static_assert(is_handle_v<H> && is_attribute_type_v<T>,
+                "attributes: H a handle type, T bool/int/double/dvec3");
+  return ConstAttribute<H, T>(
+      static_cast<const detail::TypedColumn<H, T>*>(&column(element_kind_v<H>, name, attribute_type_v<T>)));
+}
+
+template <class H, class T>
+std::optional<Attribute<H, T>> Mesh::find_attribute(std::string_view name) {
+  static_assert(is_handle_v<H> && is_attribute_type_v<T>,
+                "attributes: H a handle type, T bool/int/double/dvec3");
+  auto* c = find_column(element_kind_v<H>, name, attribute_type_v<T>);
+  if (!c) return std::nullopt;
+  return Attribute<H, T>(static_cast<detail::TypedColumn<H, T>*>(c));
+}
+
+template <class H, class T>
+std::optional<ConstAttribute<H, T>> Mesh::find_attribute(std::string_view name) const {
+  static_assert(is_handle_v<H> && is_attribute_type_v<T>,
+                "attributes: H a handle type, T bool/int/double/dvec3");
+  const auto* c = find_column(element_kind_v<H>, name, attribute_type_v<T>);
+  if (!c) return std::nullopt;
+  return ConstAttribute<H, T>(static_cast<const detail::TypedColumn<H, T>*>(c));
+}
 
 }  // namespace dlfl

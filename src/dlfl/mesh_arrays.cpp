@@ -1,7 +1,5 @@
 #include <dlfl/mesh_arrays.h>
 
-#include <cmath>
-
 #include <dlfl/errors.h>
 #include <dlfl/validate.h>
 
@@ -23,8 +21,19 @@ MeshArrays MeshArrays::from(const Mesh& m) {
   a.faces.resize(m.face_capacity());
   for (std::uint32_t i = 0; i < m.face_capacity(); ++i) {
     const auto& f = m.faces_[i];
-    a.faces[i] = {f.corner, f.size, f.alive, f.hole, std::nullopt};
-    if (!m.face_points_.empty() && !std::isnan(m.face_points_[i].x)) a.faces[i].point = m.face_points_[i];
+    a.faces[i] = {f.corner, f.size, f.alive, f.hole};
+  }
+  for (const auto& e : m.attributes_.entries()) {
+    const detail::AttributeColumn& column = *e.column;
+    Attribute& out = a.attributes.emplace_back();
+    out.name = e.name;
+    out.kind = column.kind();
+    out.default_value = column.default_value();
+    const std::uint32_t slots = m.capacity(column.kind());
+    out.values.reserve(slots);
+    detail::visit_column(column, [&](const auto& typed) {
+      for (std::uint32_t i = 0; i < slots; ++i) out.values.emplace_back(typed.get(i));
+    });
   }
   return a;
 }
@@ -77,12 +86,28 @@ Mesh MeshArrays::to_mesh() const {
     }
     m.faces_[i] = {f.corner, f.size, f.alive, f.hole};
     m.live_faces_ += f.alive;
-    if (f.point) {
-      if (!std::isfinite(f.point->x) || !std::isfinite(f.point->y) || !std::isfinite(f.point->z))
-        fail(to_string(FaceId(std::uint32_t(i))) + " has a control point that is not finite");
-      if (m.face_points_.empty()) m.face_points_.assign(nf, glm::dvec3(std::nan(""), 0.0, 0.0));
-      m.face_points_[i] = *f.point;
+    m.live_hole_faces_ += f.alive && f.hole;
+  }
+  for (const Attribute& at : attributes) {
+    const std::string what = std::string(to_string(at.kind)) + " attribute '" + at.name + "'";
+    if (at.name.empty()) fail("a " + std::string(to_string(at.kind)) + " attribute has no name");
+    if (m.has_attribute(at.kind, at.name)) fail(what + " is given twice");
+    const std::uint32_t slots = m.capacity(at.kind);
+    if (at.values.size() != slots) {
+      fail(what + " has " + std::to_string(at.values.size()) + " values for " + std::to_string(slots) +
+           " slots");
     }
+    m.add_attribute(at.kind, at.name, at.default_value);
+    detail::visit_column(*m.attributes_.find(at.kind, at.name), [&](auto& typed) {
+      using T = typename std::decay_t<decltype(typed)>::value_type;
+      for (std::uint32_t i = 0; i < slots; ++i) {
+        const T* value = std::get_if<T>(&at.values[i]);
+        if (!value) {
+          fail(what + ": value " + std::to_string(i) + " is not of type " + to_string(attribute_type_v<T>));
+        }
+        typed.slot(i) = *value;
+      }
+    });
   }
   const ValidationReport report = validate(m, 1);
   if (!report.valid()) {

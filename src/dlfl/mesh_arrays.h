@@ -4,16 +4,17 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
-#include <optional>
+#include <string>
 #include <vector>
 
 #include <dlfl/mesh.h>
 
 namespace dlfl {
 
-/// Every element slot of a mesh, live or removed, indexed by handle. A removed slot is marked as documented
-/// per type. Converting a mesh to arrays and back gives a mesh equal to it under `operator==`, with the same
-/// capacities.
+/// Every element slot of a mesh, live or removed, indexed by handle, and every named attribute with a value
+/// per slot. A removed slot is marked as documented per type (its attribute values are kept). Converting a
+/// mesh to arrays and back gives a mesh equal to it under `operator==`, with the same capacities and the same
+/// attribute values on removed slots too.
 struct MeshArrays {
   struct Vertex {
     glm::dvec3 position{0.0};
@@ -35,17 +36,25 @@ struct MeshArrays {
     std::uint32_t size = 0;
     bool alive = false;
     bool hole = false;
-    std::optional<glm::dvec3> point;  ///< the face's control point, if set (see Mesh::face_point)
+  };
+  /// A named attribute (see `Mesh::attributes`); its type is that of `default_value`.
+  struct Attribute {
+    std::string name;
+    ElementKind kind = ElementKind::vertex;
+    AttributeValue default_value;
+    std::vector<AttributeValue> values;  ///< one per slot of its element kind, live or removed
   };
   std::vector<Vertex> vertices;
   std::vector<Corner> corners;
   std::vector<Edge> edges;
   std::vector<Face> faces;
+  std::vector<Attribute> attributes;  ///< `from` sorts them by (kind, name); `to_mesh` takes any order
 
   /// The arrays of a mesh. O(size).
   static MeshArrays from(const Mesh& mesh);
-  /// The mesh these arrays describe. Every handle must be in range and the result must pass `validate`;
-  /// otherwise throws TopologyError naming the first problem. O(size).
+  /// The mesh these arrays describe. Every handle must be in range and the result must pass `validate`; each
+  /// attribute needs a non-empty name unique for its kind, one value per slot, all of its default's type.
+  /// Otherwise throws TopologyError naming the first problem. O(size).
   Mesh to_mesh() const;
 };
 

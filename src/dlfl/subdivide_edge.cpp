@@ -7,7 +7,7 @@
 
 namespace dlfl {
 
-VertexId Mesh::subdivide_edge(EdgeId e, const glm::dvec3& position, const Reuse& reuse) {
+VertexId Mesh::subdivide_edge(EdgeId e, const glm::dvec3& position, const detail::Reuse& reuse) {
   require(e, "subdivide_edge");
   if (!std::isfinite(position.x) || !std::isfinite(position.y) || !std::isfinite(position.z)) {
     throw InvalidArgument("subdivide_edge: position for the vertex on " + to_string(e) + " is not finite");
@@ -50,7 +50,7 @@ VertexId Mesh::subdivide_edge(EdgeId e, const glm::dvec3& position, const Reuse&
   return m;
 }
 
-void Mesh::unsubdivide_edge(VertexId v, const Reuse& reuse) {
+void Mesh::unsubdivide_edge(VertexId v, const detail::Reuse& reuse) {
   require(v, "unsubdivide_edge");
   if (valence(v) != 2) {
     throw TopologyError("unsubdivide_edge: " + to_string(v) + " has valence " + std::to_string(valence(v)) +

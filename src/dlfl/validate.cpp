@@ -95,6 +95,7 @@ class Checker {
     std::size_t total = 0;
     for (FaceId f : m_.faces()) {
       ++live_faces_;
+      live_hole_faces_ += m_.is_hole(f);
       const CornerId first = m_.first_corner(f);
       if (!m_.is_alive(first)) {
         report(ViolationCode::removed_reference, f, "first corner " + to_string(first) + " does not exist");
@@ -177,7 +178,8 @@ class Checker {
     std::size_t live_vertices = 0;
     for ([[maybe_unused]] VertexId v : m_.vertices()) ++live_vertices;
     if (live_vertices != m_.num_vertices() || live_edges_ != m_.num_edges() ||
-        live_faces_ != m_.num_faces() || live_corners_ != m_.num_corners()) {
+        live_faces_ != m_.num_faces() || live_hole_faces_ != m_.num_hole_faces() ||
+        live_corners_ != m_.num_corners()) {
       report_named(ViolationCode::counts, "mesh", "live element counts are out of date");
     }
     if (2 * live_edges_ + point_spheres_ != live_corners_) {
@@ -237,7 +239,7 @@ class Checker {
   ValidationReport report_;
   std::vector<std::uint32_t> corners_at_;
   std::vector<std::uint32_t> parent_;
-  std::size_t live_corners_ = 0, live_faces_ = 0, live_edges_ = 0, point_spheres_ = 0;
+  std::size_t live_corners_ = 0, live_faces_ = 0, live_hole_faces_ = 0, live_edges_ = 0, point_spheres_ = 0;
 };
 
 }  // namespace

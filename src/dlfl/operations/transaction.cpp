@@ -2,11 +2,34 @@
 
 namespace dlfl {
 
+namespace {
+
+// Applies one inverse and returns its own inverse.
+struct Reverter {
+  Mesh& mesh;
+  Change operator()(const Step& step) const { return mesh.apply(step); }
+  Change operator()(const AttributeWrite& w) const {
+    AttributeWrite back{w.kind, w.name, w.index, mesh.attribute_value(w.kind, w.name, w.index)};
+    mesh.set_attribute_value(w.kind, w.name, w.index, w.value);
+    return back;
+  }
+  Change operator()(const AttributeCreation& c) const {
+    if (c.present) {
+      mesh.add_attribute(c.kind, c.name, c.default_value);
+    } else {
+      mesh.remove_attribute(c.kind, c.name);
+    }
+    return AttributeCreation{c.kind, c.name, c.default_value, !c.present};
+  }
+};
+
+}  // namespace
+
 void ChangeRecord::revert(Mesh& mesh) {
   // Each inverse applied returns its own inverse; in the order applied they redo the changes.
-  std::vector<Step> opposite;
+  std::vector<Change> opposite;
   opposite.reserve(inverses_.size());
-  for (auto it = inverses_.rbegin(); it != inverses_.rend(); ++it) opposite.push_back(mesh.apply(*it));
+  for (auto it = inverses_.rbegin(); it != inverses_.rend(); ++it) opposite.push_back(std::visit(Reverter{mesh}, *it));
   inverses_ = std::move(opposite);
 }
 
@@ -97,6 +120,22 @@ FaceManifold Transaction::create_face_manifold(std::span<const glm::dvec3> posit
 }
 
 void Transaction::apply(const Step& step) { record_.inverses_.push_back(mesh_.apply(step)); }
+
+void Transaction::add_attribute(ElementKind kind, std::string_view name, const AttributeValue& default_value) {
+  if (mesh_.has_attribute(kind, name)) {
+    mesh_.add_attribute(kind, name, default_value);  // throws for another type, else does nothing
+    return;
+  }
+  mesh_.add_attribute(kind, name, default_value);
+  record_.inverses_.push_back(AttributeCreation{kind, std::string(name), default_value, false});
+}
+
+void Transaction::set_attribute(ElementKind kind, std::string_view name, std::uint32_t index,
+                                const AttributeValue& value) {
+  AttributeWrite back{kind, std::string(name), index, mesh_.attribute_value(kind, name, index)};
+  mesh_.set_attribute_value(kind, name, index, value);  // throws with nothing changed
+  record_.inverses_.push_back(std::move(back));
+}
 
 ChangeRecord Transaction::commit() {
   committed_ = true;

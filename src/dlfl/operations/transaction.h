@@ -6,6 +6,9 @@
 #include <cstddef>
 #include <glm/vec3.hpp>
 #include <span>
+#include <string>
+#include <string_view>
+#include <variant>
 #include <vector>
 
 #include <dlfl/create_face_manifold.h>
@@ -13,18 +16,37 @@
 
 namespace dlfl {
 
+/// The inverse of writing one named attribute value: the value to put back.
+struct AttributeWrite {
+  ElementKind kind;
+  std::string name;
+  std::uint32_t index;
+  AttributeValue value;
+};
+
+/// The inverse of adding a named attribute (`present` false: remove it) or of removing one that holds only
+/// its default (`present` true: add it back).
+struct AttributeCreation {
+  ElementKind kind;
+  std::string name;
+  AttributeValue default_value;
+  bool present;
+};
+
+/// One recorded inverse: an Euler operator, or an attribute change.
+using Change = std::variant<Step, AttributeWrite, AttributeCreation>;
+
 /// The inverses of a sequence of changes, in the order the changes were made. `revert` applies them back to
-/// front, which restores the mesh exactly (same handles, bit-identical positions), and turns the record into
-/// the one that redoes the changes.
+/// front, which restores the mesh exactly (same handles, bit-identical positions, the same attributes), and
+/// turns the record into the one that redoes the changes.
 class ChangeRecord {
  public:
   ChangeRecord() = default;
-  explicit ChangeRecord(std::vector<Step> inverses) : inverses_(std::move(inverses)) {}
 
   bool empty() const { return inverses_.empty(); }
   std::size_t size() const { return inverses_.size(); }
-  /// The inverse steps, oldest change first.
-  std::span<const Step> inverses() const { return inverses_; }
+  /// The inverses, oldest change first.
+  std::span<const Change> inverses() const { return inverses_; }
 
   /// Undoes the recorded changes on `mesh` (which must be the mesh they were made on, as they left it), and
   /// becomes the record of that undo: reverting again redoes them.
@@ -35,7 +57,7 @@ class ChangeRecord {
 
  private:
   friend class Transaction;
-  std::vector<Step> inverses_;
+  std::vector<Change> inverses_;
 };
 
 /// Changes a mesh through the Euler operators and records their inverses. Each function has the contract of
@@ -66,6 +88,12 @@ class Transaction {
                                     std::span<CornerId> back_corners = {});
   /// Any operator given as a value.
   void apply(const Step& step);
+
+  /// Adds a named attribute (see `Mesh::add_attribute`); nothing if it exists with the same type. Throws
+  /// InvalidArgument if it exists with another type.
+  void add_attribute(ElementKind kind, std::string_view name, const AttributeValue& default_value);
+  /// Writes one value of an existing named attribute (see `Mesh::set_attribute_value`).
+  void set_attribute(ElementKind kind, std::string_view name, std::uint32_t index, const AttributeValue& value);
 
   /// Number of changes recorded so far.
   std::size_t size() const { return record_.size(); }

@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -32,6 +33,39 @@ glm::dvec3 centroid(const Mesh& mesh, FaceId f) {
   return sum / double(mesh.size(f));
 }
 
+constexpr double nan = std::numeric_limits<double>::quiet_NaN();
+const glm::dvec3 unset_point(nan, nan, nan);
+
+bool is_set(const glm::dvec3& p) { return !std::isnan(p.x) && !std::isnan(p.y) && !std::isnan(p.z); }
+
+// The new control points are finite for finite input; the check keeps the promise of set_face_point (and
+// the old behaviour, which went through it) should an overflow make one infinite.
+const glm::dvec3& check_finite(const glm::dvec3& p, FaceId f) {
+  if (!(std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z))) {
+    throw InvalidArgument("honeycomb-zw: the control point of " + to_string(f) + " is not finite");
+  }
+  return p;
+}
+
+void require_face(const Mesh& mesh, FaceId f, const char* op) {
+  if (!mesh.is_alive(f)) throw InvalidArgument(std::string(op) + ": " + to_string(f) + " does not exist");
+}
+
+// The control points, read once per mesh rather than looked up by name per face.
+class ControlPoints {
+ public:
+  explicit ControlPoints(const Mesh& mesh)
+      : mesh_(mesh), points_(mesh.find_attribute<FaceId, glm::dvec3>(face_point_attribute)) {}
+  glm::dvec3 point_or_centroid(FaceId f) const {
+    if (points_ && is_set((*points_)[f])) return (*points_)[f];
+    return centroid(mesh_, f);
+  }
+
+ private:
+  const Mesh& mesh_;
+  std::optional<ConstAttribute<FaceId, glm::dvec3>> points_;
+};
+
 double half_angle_cosine(int n, double b, const char* what) {
   if (n < 3) throw InvalidArgument(std::string(what) + ": needs n >= 3, got " + std::to_string(n));
   check_unit("b", b);
@@ -39,6 +73,33 @@ double half_angle_cosine(int n, double b, const char* what) {
 }
 
 }  // namespace
+
+std::optional<glm::dvec3> face_point(const Mesh& mesh, FaceId f) {
+  require_face(mesh, f, "face_point");
+  const auto points = mesh.find_attribute<FaceId, glm::dvec3>(face_point_attribute);
+  if (!points || !is_set((*points)[f])) return std::nullopt;
+  return (*points)[f];
+}
+
+glm::dvec3 face_point_or_centroid(const Mesh& mesh, FaceId f) {
+  require_face(mesh, f, "face_point_or_centroid");
+  return ControlPoints(mesh).point_or_centroid(f);
+}
+
+glm::dvec3 unset_face_point() { return unset_point; }
+
+void set_face_point(Mesh& mesh, FaceId f, const std::optional<glm::dvec3>& point) {
+  require_face(mesh, f, "set_face_point");
+  if (point && !(std::isfinite(point->x) && std::isfinite(point->y) && std::isfinite(point->z))) {
+    throw InvalidArgument("set_face_point: control point of " + to_string(f) + " is not finite");
+  }
+  if (!point) {
+    if (auto points = mesh.find_attribute<FaceId, glm::dvec3>(face_point_attribute))
+      (*points)[f] = unset_point;
+    return;
+  }
+  mesh.add_face_attribute<glm::dvec3>(face_point_attribute, unset_point)[f] = *point;
+}
 
 double zhang_wang_a(const ZhangWangParams& p, int n) {
   if (n < 2) throw InvalidArgument("zhang_wang_a: needs n >= 2, got " + std::to_string(n));
@@ -57,7 +118,8 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombO
 
   // The CCV of every input face: its control point, or its centroid.
   std::vector<glm::dvec3> ccv(mesh.face_capacity());
-  for (FaceId f : mesh.faces()) ccv[f.index()] = mesh.face_point_or_centroid(f);
+  const ControlPoints control(mesh);
+  for (FaceId f : mesh.faces()) ccv[f.index()] = control.point_or_centroid(f);
 
   const double b = p.b;
   const auto face_points = [&](FaceId f, std::span<const CornerId> corners, std::span<glm::dvec3> points) {
@@ -71,13 +133,15 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombO
   };
   detail::HoneycombRemesh out = detail::honeycomb_remesh(mesh, face_points, true);
   Mesh& result = out.mesh;
+  const FaceAttribute<glm::dvec3> result_points =
+      result.add_face_attribute<glm::dvec3>(face_point_attribute, unset_point);
 
   // Formula (3): the shrunken copy of each face.
   for (FaceId f : mesh.faces()) {
     const FaceId copy = out.face_of_face[f.index()];
     if (!copy.valid()) continue;  // a point sphere
     const double a = zhang_wang_a(p, int(mesh.size(f)));
-    result.set_face_point(copy, (1.0 - a) * ccv[f.index()] + a * centroid(mesh, f));
+    result_points[copy] = check_finite((1.0 - a) * ccv[f.index()] + a * centroid(mesh, f), copy);
   }
 
   // Formula (4): sums over the neighbours and the faces around each vertex, one corner at a time (the corner
@@ -97,7 +161,8 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombO
     if (n == 0) continue;  // a point sphere: copied without a CCV
     const glm::dvec3 average =
         (p.alpha * neighbour_sum[v.index()] + (1.0 - p.alpha) * ccv_sum[v.index()]) / double(n);
-    result.set_face_point(out.face_of_vertex[v.index()], (1.0 - p.c) * mesh.position(v) + p.c * average);
+    const FaceId around = out.face_of_vertex[v.index()];
+    result_points[around] = check_finite((1.0 - p.c) * mesh.position(v) + p.c * average, around);
   }
   if (origin) {
     origin->face_of_face = std::move(out.face_of_face);
@@ -118,7 +183,7 @@ glm::dvec3 zhang_wang_limit_point(const Mesh& mesh, FaceId f, const ZhangWangPar
         "zhang_wang_limit_point: with a = 0 and b = 1 a face's centre never moves, so it has "
         "no single limit");
   }
-  return ((1.0 - b) * mesh.face_point_or_centroid(f) + a * centroid(mesh, f)) / denominator;
+  return ((1.0 - b) * ControlPoints(mesh).point_or_centroid(f) + a * centroid(mesh, f)) / denominator;
 }
 
 TensionBounds zhang_wang_paper_bounds(int n, double b) {

@@ -1,8 +1,9 @@
 #pragma once
 // Zhang and Wang's honeycomb subdivision with central control vertices ("Honeycomb subdivision", Journal of
-// Software 2002): the honeycomb's topology (dlfl/schemes/honeycomb.h) with every face carrying a central control
-// vertex (CCV), stored as the face's control point (`Mesh::face_point`). A face without one uses its
-// centroid (the barycenter of its vertices), which is also what a loaded mesh starts with.
+// Software 2002): the honeycomb's topology (dlfl/schemes/honeycomb.h) with every face carrying a central
+// control vertex (CCV), stored as the face's control point: the point face attribute "face_point"
+// (`face_point`, `set_face_point` below; NaN means unset). A face without one uses its centroid (the
+// barycenter of its vertices), which is also what a loaded mesh starts with.
 //
 // One step, for a face P = [q; p_1 .. p_n] (q its CCV, p_i its vertices in order):
 //   new edge vertex  p'_i = (1 - b_n) q + b_n (p_i + p_{i+1}) / 2                       formula (2)
@@ -20,11 +21,32 @@
 // - Point spheres are copied through unchanged, without a CCV.
 
 #include <optional>
+#include <string_view>
 #include <vector>
 
 #include <dlfl/mesh.h>
 
 namespace dlfl {
+
+/// The name of the face attribute (of type point) that holds the control points. Unset points are NaN, the
+/// attribute's default.
+inline constexpr std::string_view face_point_attribute = "face_point";
+
+/// The value of the "face_point" attribute on a face without a control point (its default): NaN, NaN, NaN.
+glm::dvec3 unset_face_point();
+
+/// The face's control point, if one is set (a point with a NaN component counts as unset). Throws
+/// InvalidArgument for a removed face, or if the mesh has a "face_point" face attribute of another type.
+std::optional<glm::dvec3> face_point(const Mesh& mesh, FaceId f);
+
+/// The control point if set, else the centroid of the face's vertices. Throws as `face_point`.
+glm::dvec3 face_point_or_centroid(const Mesh& mesh, FaceId f);
+
+/// Sets a face's control point, or with `std::nullopt` unsets it (stores NaN). The first point set creates
+/// the attribute (default NaN); unsetting on a mesh without it changes nothing. A removed face keeps its
+/// point, so bringing the face back restores it. Throws InvalidArgument for a removed face, a non-finite
+/// point, or a "face_point" face attribute of another type.
+void set_face_point(Mesh& mesh, FaceId f, const std::optional<glm::dvec3>& point);
 
 /// The weights of formulas (2), (3) and (4). Every weight must lie in [0, 1].
 struct ZhangWangParams {
@@ -56,7 +78,8 @@ struct HoneycombOrigin {
 /// One step. The input is not modified. The result has the honeycomb's topology (V' = 2E, E' = 3E,
 /// F' = F + V, every new vertex 3-valent, each shrunken face of its old face's size, each vertex face of
 /// twice its old vertex's valence, the Euler characteristic and genus of every component kept), and every
-/// face of it (point spheres aside) carries its CCV. Handles are those of `honeycomb` on the same mesh.
+/// face of it (point spheres aside) carries its CCV. Handles are those of `honeycomb` on the same mesh. The
+/// result has no attribute but "face_point".
 /// The shrunken copy of a face starts at the point for the face's first corner (the point on the edge leaving
 /// it). When `origin` is given it receives where each new face came from. Throws InvalidArgument for a bad
 /// parameter or a non-finite new point.
