@@ -10,7 +10,7 @@
 
 namespace dlfl {
 
-Mesh catmull_clark(const Mesh& input) {
+Mesh catmull_clark(const Mesh& input, Origins* origins) {
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
   const auto nv = static_cast<std::uint32_t>(m.num_vertices());
@@ -58,7 +58,9 @@ Mesh catmull_clark(const Mesh& input) {
   }
   // Quad k for corner k: (vertex point, edge point out, face point, edge point in).
   detail::assemble_quad_split(m, out);
-  return out.finish();
+  Mesh result = out.finish();
+  if (origins) detail::quad_split_origins(m, result, detail::InputHandles(input), *origins);
+  return result;
 }
 
 namespace detail {
@@ -68,7 +70,7 @@ SchemeSpec catmull_clark_scheme() {
           "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh",
           {},
           {},
-          [](const Mesh& m, const Params&, Origins*) { return catmull_clark(m); }};
+          [](const Mesh& m, const Params&, Origins* origins) { return catmull_clark(m, origins); }};
 }
 
 }  // namespace detail

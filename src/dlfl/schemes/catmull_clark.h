@@ -2,6 +2,7 @@
 // Catmull-Clark subdivision on any polygon mesh.
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -18,6 +19,13 @@ namespace dlfl {
 /// comes from the input's k-th corner. 2-gons are fine. Hole faces are subdivided like faces (the boundary is
 /// smoothed as if capped) and their quads stay holes. Throws TopologyError for a point sphere (a vertex with
 /// no edge has no vertex rule). The input is not modified.
-Mesh catmull_clark(const Mesh& mesh);
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself, tombstones and all): a vertex point <-
+/// its vertex, an edge point <- its edge, a face point <- its face; quad k <- the input corner it is made for
+/// (it holds that corner's vertex point and face point); each half of an old edge <- that edge, and the edge
+/// from the edge point of edge(c) to the face point of face(c) <- corner c. By kind: vertices V from
+/// vertices, E from edges, F from faces; faces C from corners; edges 2E from edges, C from corners. Costs
+/// nothing when not asked for.
+Mesh catmull_clark(const Mesh& mesh, Origins* origins = nullptr);
 
 }  // namespace dlfl

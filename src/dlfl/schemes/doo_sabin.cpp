@@ -8,6 +8,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
@@ -85,7 +86,7 @@ void face_points(const glm::dvec3* v, glm::dvec3* p, std::uint32_t n, WeightTabl
 
 }  // namespace
 
-Mesh doo_sabin(const Mesh& input) {
+Mesh doo_sabin(const Mesh& input, Origins* origins) {
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
   const auto nv = static_cast<std::uint32_t>(m.num_vertices());
@@ -181,7 +182,30 @@ Mesh doo_sabin(const Mesh& input) {
   for (std::uint32_t f = 0; f < nf; ++f) {
     if (m.is_hole(FaceId(f))) out.set_hole(f, true);
   }
-  return out.finish();
+  Mesh result = out.finish();
+  if (origins) {
+    const detail::InputHandles in(input);
+    detail::reset_origins(*origins, result);
+    for (std::uint32_t k = 0; k < nc; ++k) origins->vertices[k] = in.corner(k);
+    for (std::uint32_t f = 0; f < nf; ++f) origins->faces[f] = in.face(f);
+    for (std::uint32_t e = 0; e < ne; ++e) origins->faces[nf + e] = in.edge(e);
+    for (std::uint32_t v = 0; v < nv; ++v) origins->faces[nf + ne + v] = in.vertex(v);
+    // The edge leaving each output corner: along an F-face, the side of its corner; around a V-face, the old
+    // edge it crosses (see the twins above: E0 and E2 pair with V-faces, E1 and E3 with F-faces).
+    std::vector<Origin> edge_of(4 * std::size_t(nc));
+    for (std::uint32_t k = 0; k < nc; ++k) {
+      edge_of[slot[k]] = in.corner(k);
+      edge_of[vslot[k]] = in.edge(m.edge(m.prev(CornerId(k))).index());
+    }
+    for (std::uint32_t e = 0; e < ne; ++e) {
+      const std::uint32_t q = e_base + 4 * e;
+      edge_of[q + 0] = edge_of[q + 2] = in.edge(e);
+      edge_of[q + 1] = in.corner(m.corner(EdgeId(e), 1).index());
+      edge_of[q + 3] = in.corner(m.corner(EdgeId(e), 0).index());
+    }
+    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+  }
+  return result;
 }
 
 namespace detail {
@@ -191,7 +215,7 @@ SchemeSpec doo_sabin_scheme() {
           "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent",
           {},
           {},
-          [](const Mesh& m, const Params&, Origins*) { return doo_sabin(m); }};
+          [](const Mesh& m, const Params&, Origins* origins) { return doo_sabin(m, origins); }};
 }
 
 }  // namespace detail

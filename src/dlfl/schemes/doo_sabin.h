@@ -2,6 +2,7 @@
 // Doo-Sabin subdivision on any polygon mesh.
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -36,6 +37,13 @@ namespace dlfl {
 /// Throws TopologyError, naming the vertex, for a point sphere (a vertex with no edge has no face to put a
 /// point in) and for a vertex of valence 1 (its V-face would have one corner and an edge from a point to
 /// itself). O(size) plus O(n) per face of more than 64 sides (its sums are evaluated in closed form).
-Mesh doo_sabin(const Mesh& mesh);
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself): the point of corner c <- c; an F-face
+/// <- its face, an E-face <- its edge, a V-face <- its vertex; an F-face's side from the point of c to the
+/// point of next(c) (along edge(c), inside face(c)) <- c; a V-face's side, which crosses an old edge near one
+/// of its ends, <- that edge (each edge is crossed twice, once at each end). By kind: vertices C from
+/// corners; faces F, E, V from faces, edges, vertices; edges C from corners, C = 2E from edges. Costs
+/// nothing when not asked for.
+Mesh doo_sabin(const Mesh& mesh, Origins* origins = nullptr);
 
 }  // namespace dlfl

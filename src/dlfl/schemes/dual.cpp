@@ -5,6 +5,8 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/corner_origins.h>
+#include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
@@ -21,7 +23,9 @@ auto original(const Range& range, std::uint32_t k) {
 
 }  // namespace
 
-Mesh dual(const Mesh& input) {
+Mesh dual(const Mesh& input, Origins* origins) { return detail::dual(input, origins, nullptr); }
+
+Mesh detail::dual(const Mesh& input, Origins* origins, std::vector<Origin>* corners) {
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
   const auto nv = static_cast<std::uint32_t>(m.num_vertices());
@@ -84,7 +88,24 @@ Mesh dual(const Mesh& input) {
     const CornerId twin = m.next(m.opposite(m.prev(c)));
     out.set_corner(vslot[k], m.face(c).index(), vslot[twin.index()]);
   }
-  return out.finish();
+  Mesh result = out.finish();
+  if (origins || corners) {
+    const detail::InputHandles in(input);
+    if (corners) {
+      corners->assign(nc, Origin{});
+      for (std::uint32_t k = 0; k < nc; ++k) (*corners)[vslot[k]] = in.corner(k);
+    }
+    if (origins) {
+      detail::reset_origins(*origins, result);
+      for (std::uint32_t f = 0; f < nf; ++f) origins->vertices[f] = in.face(f);
+      for (std::uint32_t v = 0; v < nv; ++v) origins->faces[v] = in.vertex(v);
+      // The corner for c crosses edge(prev(c)) (see the twins above).
+      std::vector<Origin> edge_of(nc);
+      for (std::uint32_t k = 0; k < nc; ++k) edge_of[vslot[k]] = in.edge(m.edge(m.prev(CornerId(k))).index());
+      detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+    }
+  }
+  return result;
 }
 
 namespace detail {
@@ -94,7 +115,7 @@ SchemeSpec dual_scheme() {
           "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge",
           {},
           {},
-          [](const Mesh& m, const Params&, Origins*) { return dual(m); }};
+          [](const Mesh& m, const Params&, Origins* origins) { return dlfl::dual(m, origins); }};
 }
 
 }  // namespace detail

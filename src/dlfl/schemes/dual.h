@@ -2,6 +2,7 @@
 // The dual of a closed polygon mesh.
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -27,6 +28,10 @@ namespace dlfl {
 /// - an edge with the same face on both sides (for example the edge of a valence-1 vertex): its dual would be
 ///   a self-loop.
 /// O(size).
-Mesh dual(const Mesh& mesh);
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself): output vertex <- the face it stands
+/// for, output face <- the vertex, output edge <- the edge it crosses. By kind: vertices F from faces, faces
+/// V from vertices, edges E from edges. Costs nothing when not asked for.
+Mesh dual(const Mesh& mesh, Origins* origins = nullptr);
 
 }  // namespace dlfl

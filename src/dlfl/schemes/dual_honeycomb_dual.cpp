@@ -3,16 +3,20 @@
 #include <string>
 
 #include <dlfl/errors.h>
+#include <dlfl/schemes/detail/corner_origins.h>
 #include <dlfl/schemes/detail/honeycomb_params.h>
+#include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 #include <dlfl/schemes/dual.h>
 
 namespace dlfl {
 
-Mesh dual_honeycomb_dual(const Mesh& mesh, const HoneycombParams& p) {
+Mesh dual_honeycomb_dual(const Mesh& mesh, const HoneycombParams& p, Origins* origins) {
   Mesh d;
+  Origins dual_origins;
+  std::vector<Origin> dual_corners;  // the honeycomb's origins name corners of the first dual
   try {
-    d = dual(mesh);
+    d = origins ? detail::dual(mesh, &dual_origins, &dual_corners) : dual(mesh);
   } catch (const TopologyError& e) {
     throw TopologyError(std::string("dual-honeycomb-dual: ") + e.what());
   }
@@ -23,7 +27,13 @@ Mesh dual_honeycomb_dual(const Mesh& mesh, const HoneycombParams& p) {
                           " (the honeycomb step runs on the dual, whose N-sided faces are the input's N-valent "
                           "vertices)");
   }
-  return dual(honeycomb(d, p));
+  if (!origins) return dual(honeycomb(d, p));
+  Origins honeycomb_origins;
+  const Mesh h = honeycomb(d, p, &honeycomb_origins);
+  Mesh result = dual(h, origins);
+  detail::compose(honeycomb_origins, dual_origins, dual_corners);
+  detail::compose(*origins, honeycomb_origins, {});
+  return result;
 }
 
 namespace detail {
@@ -35,8 +45,8 @@ SchemeSpec dual_honeycomb_dual_scheme() {
           [](const Params& given, Params& resolved) {
             check_honeycomb_param_set("dual-honeycomb-dual", given, resolved);
           },
-          [](const Mesh& m, const Params& p, Origins*) {
-            return dual_honeycomb_dual(m, honeycomb_params_from(p));
+          [](const Mesh& m, const Params& p, Origins* origins) {
+            return dual_honeycomb_dual(m, honeycomb_params_from(p), origins);
           }};
 }
 

@@ -43,6 +43,14 @@ namespace dlfl {
 /// InvalidArgument for honeycomb parameters that do not fit the dual's faces (see `check_honeycomb_params`):
 /// the dual's N-sided faces are the input's N-valent vertices, so with the default tension a vertex of
 /// valence 2 (a = 1.075) is rejected.
-Mesh dual_honeycomb_dual(const Mesh& mesh, const HoneycombParams& p = {});
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself), those of the three steps taken back
+/// to the input: the vertex of an input vertex <- that vertex, the vertex of an input face <- that face; the
+/// triangle for input corner c (the dual of the honeycomb vertex made for c's corner of the first dual) <- c,
+/// and it holds the vertices of vertex(c) and face(c); the edge from the vertex of v to the vertex of a face
+/// f at v <- the corner of v in f; the edge between the vertices of the two faces of an input edge <- that
+/// edge. By kind: vertices V from vertices, F from faces; faces C from corners; edges C from corners, E from
+/// edges. Costs nothing when not asked for.
+Mesh dual_honeycomb_dual(const Mesh& mesh, const HoneycombParams& p = {}, Origins* origins = nullptr);
 
 }  // namespace dlfl

@@ -119,7 +119,7 @@ double honeycomb_tension(const HoneycombParams& p, int N) { return p.a ? *p.a : 
 
 void check_honeycomb_params(const Mesh& mesh, const HoneycombParams& p) { check_params(summarize(mesh), p); }
 
-Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p) {
+Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p, Origins* origins) {
   const FaceSummary s = summarize(mesh);
   check_params(s, p);
 
@@ -169,7 +169,7 @@ Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p) {
       new_points[n] = origin + (a * edge_points[n] + scale * rest);
     }
   };
-  return detail::honeycomb_remesh(mesh, face_points, false).mesh;
+  return detail::honeycomb_remesh(mesh, face_points, false, origins).mesh;
 }
 
 namespace detail {
@@ -213,7 +213,9 @@ SchemeSpec honeycomb_scheme() {
       "Akleman-Srinivasan honeycomb: a shrunken copy of every face and a face around every old vertex",
       honeycomb_param_specs(),
       [](const Params& given, Params& resolved) { check_honeycomb_param_set("honeycomb", given, resolved); },
-      [](const Mesh& m, const Params& p, Origins*) { return honeycomb(m, honeycomb_params_from(p)); }};
+      [](const Mesh& m, const Params& p, Origins* origins) {
+        return honeycomb(m, honeycomb_params_from(p), origins);
+      }};
 }
 
 }  // namespace detail

@@ -24,6 +24,7 @@
 #include <optional>
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -65,6 +66,16 @@ void check_honeycomb_params(const Mesh& mesh, const HoneycombParams& p);
 /// (coordinates near overflow). Formula (2) costs O(N^2) per face of up to 64 sides (weights tabulated once
 /// per size) and O(N) above (a closed form of its cosine sum), so one huge face cannot make a step
 /// quadratic. Every element of the result is reserved up front, so the arrays never regrow.
-Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p = {});
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself; the result's tombstones have none):
+/// - a new vertex <- the input corner it is made for (the point on the edge leaving the corner, in its face);
+/// - a front face <- its input face (same size); the face around an old vertex <- that vertex (2 x valence
+///   corners: the points of the corners at the vertex and of the corners before them);
+/// - a front face's side from the point of corner c to the point of next(c) <- next(c), the corner it cuts
+///   off; the edge inserted across an old edge <- that edge (it joins the points of its two side corners);
+/// - a copied point sphere (vertex and face) <- its vertex.
+/// By kind: vertices C from corners; faces F from faces, V from vertices; edges C from corners, E from edges.
+/// Costs nothing when not asked for.
+Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p = {}, Origins* origins = nullptr);
 
 }  // namespace dlfl

@@ -9,6 +9,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
@@ -75,7 +76,7 @@ void check_triangles(const Mesh& m) {
 //   3 s1 + 0 at b with twin 3 next(s0) + 2;     3 next(s0) + 2 at m(e) with twin 3 s1 + 0,
 // since prev(next(s)) = s, so edge(prev(next(s))) = e. So one pass over the faces fills the inner corners
 // (3c + 1 and the central triangles) and one pass over the edges fills the rest, with the edge points.
-Mesh loop(const Mesh& input) {
+Mesh loop(const Mesh& input, Origins* origins) {
   check_triangles(input);  // on the input, so that errors name its own handles, not compacted ones
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
@@ -142,7 +143,35 @@ Mesh loop(const Mesh& input) {
     const double beta = n < beta_table.size() ? beta_table[n] : loop_beta(n);
     out.set_position(v, (1.0 - n * beta) * m.position(VertexId(v)) + beta * sum[v]);
   }
-  return out.finish();
+  Mesh result = out.finish();
+  if (origins) {
+    const detail::InputHandles in(input);
+    detail::reset_origins(*origins, result);
+    for (std::uint32_t v = 0; v < nv; ++v) origins->vertices[v] = in.vertex(v);
+    for (std::uint32_t e = 0; e < ne; ++e) origins->vertices[edge_base + e] = in.edge(e);
+    for (std::uint32_t k = 0; k < nc; ++k) origins->faces[k] = in.corner(k);
+    for (std::uint32_t f = 0; f < nf; ++f) origins->faces[nc + f] = in.face(f);
+    // Corner 3c + i of a corner triangle: i = 0 runs along edge(c), 1 is the inner edge, 2 runs along
+    // edge(prev c). A central corner is never an edge's side 0 (its twin 3c + 1 is smaller), but would name
+    // its twin's corner c(j+1).
+    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) {
+      if (k >= central_base) {
+        CornerId c = m.first_corner(FaceId((k - central_base) / 3));
+        for (std::uint32_t j = 0; j <= (k - central_base) % 3; ++j) c = m.next(c);
+        return in.corner(c.index());
+      }
+      const CornerId c(k / 3);
+      switch (k % 3) {
+        case 0:
+          return in.edge(m.edge(c).index());
+        case 1:
+          return in.corner(c.index());
+        default:
+          return in.edge(m.edge(m.prev(c)).index());
+      }
+    });
+  }
+  return result;
 }
 
 namespace detail {
@@ -152,7 +181,7 @@ SchemeSpec loop_scheme() {
           "Loop: every triangle into four, on triangle meshes",
           {},
           {},
-          [](const Mesh& m, const Params&, Origins*) { return loop(m); }};
+          [](const Mesh& m, const Params&, Origins* origins) { return loop(m, origins); }};
 }
 
 }  // namespace detail

@@ -2,6 +2,7 @@
 // Loop subdivision on triangle meshes.
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -30,6 +31,12 @@ namespace dlfl {
 /// ("loop: f7 has 4 corners; Loop subdivision needs triangles") or if the mesh has a point sphere (naming its
 /// vertex: it has no edge, so no vertex rule). The input is not modified. O(size), in a few sequential
 /// passes.
-Mesh loop(const Mesh& mesh);
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself): a vertex point <- its vertex, an edge
+/// point <- its edge; the corner triangle of corner c <- c, the central triangle of face f <- f; each half of
+/// an old edge <- that edge, the inner edge of the corner triangle of c (between the edge points of edge(c)
+/// and edge(prev c)) <- c. By kind: vertices V from vertices, E from edges; faces C from corners, F from
+/// faces; edges 2E from edges, C from corners. Costs nothing when not asked for.
+Mesh loop(const Mesh& mesh, Origins* origins = nullptr);
 
 }  // namespace dlfl

@@ -9,7 +9,9 @@
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/schemes/detail/corner_origins.h>
 #include <dlfl/schemes/detail/meng_prautzsch_params.h>
+#include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
@@ -28,7 +30,12 @@ void check_mp_honeycomb_params(const MpHoneycombParams& p) {
   detail::check_mp_params("mp-honeycomb", p.tau, p.ratio, p.center, p.random);
 }
 
-Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
+Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Origins* origins) {
+  return detail::mp_honeycomb(input, params, origins, nullptr);
+}
+
+Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Origins* origins,
+                          std::vector<Origin>* corners) {
   check_mp_honeycomb_params(params);
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
@@ -123,7 +130,37 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params) {
     out.set_corner(base + 4, nv + m.next(c0).index(), position[c0.index()]);
     out.set_corner(base + 5, nv + c0.index(), up(m.prev(c0)));
   }
-  return detail::require_convex_result(out.finish(), center, "mp-honeycomb", params.tau, params.ratio);
+  Mesh result = detail::require_convex_result(out.finish(), center, "mp-honeycomb", params.tau, params.ratio);
+  if (!origins && !corners) return result;
+  // Per output corner: the origin of the corner and of its outgoing edge. In hexagon e (corners as set
+  // above) the corners at f-face vertices stem from those vertices' corners, the ones at old vertices from
+  // the side corner of e leaving them; its sides are verticals (old vertex to f-face vertex of corner x
+  // <- x) and f-face sides (of corner c <- c).
+  const detail::InputHandles in(input);
+  std::vector<Origin> corner_of(result.corner_capacity()), edge_of(result.corner_capacity());
+  for (std::uint32_t i = 0; i < nc; ++i) corner_of[position[i]] = edge_of[position[i]] = in.corner(i);
+  for (std::uint32_t e = 0; e < ne; ++e) {
+    const CornerId c0 = m.corner(EdgeId(e), 0), c1 = m.corner(EdgeId(e), 1);
+    const Origin o0 = in.corner(c0.index()), o1 = in.corner(c1.index());
+    const Origin n0 = in.corner(m.next(c0).index()), n1 = in.corner(m.next(c1).index());
+    const std::uint32_t base = nc + 6 * e;
+    const Origin corner_origins[6] = {o0, n1, o1, o1, n0, o0};
+    const Origin edge_origins[6] = {n1, o1, o1, n0, o0, o0};
+    for (int j = 0; j < 6; ++j) {
+      corner_of[base + j] = corner_origins[j];
+      edge_of[base + j] = edge_origins[j];
+    }
+  }
+  if (origins) {
+    detail::reset_origins(*origins, result);
+    for (std::uint32_t v = 0; v < nv; ++v) origins->vertices[v] = in.vertex(v);
+    for (std::uint32_t k = 0; k < nc; ++k) origins->vertices[nv + k] = in.corner(k);
+    for (std::uint32_t f = 0; f < nf; ++f) origins->faces[f] = in.face(f);
+    for (std::uint32_t e = 0; e < ne; ++e) origins->faces[nf + e] = in.edge(e);
+    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+  }
+  if (corners) *corners = std::move(corner_of);
+  return result;
 }
 
 namespace detail {
@@ -143,13 +180,13 @@ SchemeSpec mp_honeycomb_scheme() {
           "Meng-Prautzsch honeycomb H: convexity-preserving refinement of convex polyhedra by cutting planes",
           std::move(params),
           {},
-          [](const Mesh& m, const Params& p, Origins*) {
+          [](const Mesh& m, const Params& p, Origins* origins) {
             MpHoneycombParams h;
             h.tau = p.number("tau");
             h.ratio = p.number("ratio");
             h.center = mp_center_from(p);
             h.random = mp_random_from(p);
-            return mp_honeycomb(m, h);
+            return dlfl::mp_honeycomb(m, h, origins);
           }};
 }
 

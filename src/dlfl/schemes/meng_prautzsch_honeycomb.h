@@ -8,6 +8,7 @@
 
 #include <dlfl/mesh.h>
 #include <dlfl/schemes/detail/meng_prautzsch_common.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -49,6 +50,12 @@ void check_mp_honeycomb_params(const MpHoneycombParams& params);
 /// from(e)). Corners are numbered face after face in that order. Faces are counter-clockwise seen from
 /// outside; an edge's side 0 is its corner with the smaller handle, and edges are numbered in the order of
 /// their side-0 corners (assembled directly with `MeshAssembler`, O(size)). The input is not modified.
-Mesh mp_honeycomb(const Mesh& mesh, const MpHoneycombParams& params = {});
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself): an old vertex <- itself, the f-face
+/// vertex at corner c <- c; an f-face <- its face (parallel to it, same size), a hexagon <- its edge; an
+/// f-face's side from the vertex of c to that of next(c) (along edge(c)) <- c, the edge from an old vertex
+/// to the f-face vertex of one of its corners c <- c. By kind: vertices V from vertices, C from corners;
+/// faces F from faces, E from edges; edges 2C from corners. Costs nothing when not asked for.
+Mesh mp_honeycomb(const Mesh& mesh, const MpHoneycombParams& params = {}, Origins* origins = nullptr);
 
 }  // namespace dlfl

@@ -6,7 +6,9 @@
 #include <dlfl/errors.h>
 #include <dlfl/analysis/convex_polyhedron.h>
 #include <dlfl/schemes/detail/meng_prautzsch_common.h>
+#include <dlfl/schemes/detail/corner_origins.h>
 #include <dlfl/schemes/detail/meng_prautzsch_params.h>
+#include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
@@ -108,7 +110,7 @@ void check_mhp_params(const MhpParams& params) {
                           params.pushing.random);
 }
 
-Mesh mhp(const Mesh& input, const MhpParams& params, const MhpStepObserver& observer) {
+Mesh mhp(const Mesh& input, const MhpParams& params, const MhpStepObserver& observer, Origins* origins) {
   check_mhp_params(params);
   const std::string steps = expand_mhp_pattern(params.pattern);
   // Every step multiplies the edges by 4: refuse at once a pattern whose end could not be stored, rather than
@@ -121,18 +123,33 @@ Mesh mhp(const Mesh& input, const MhpParams& params, const MhpStepObserver& obse
   MpPushingParams p = params.pushing;
   h.center = p.center = center;
   Mesh current;
+  // With origins: those of the steps so far, to the input, and of the current mesh's corners (which the next
+  // step's origins may name).
+  Origins so_far, step;
+  std::vector<Origin> corners_so_far, step_corners;
   for (std::size_t i = 0; i < steps.size(); ++i) {
     const char kind = steps[i];
     const Mesh& source = i == 0 ? input : current;  // no copy of the input
+    Origins* step_origins = origins ? &step : nullptr;
+    std::vector<Origin>* corners = origins && i + 1 < steps.size() ? &step_corners : nullptr;
     if (kind == 'H') {
       h.random.seed = params.honeycomb.random.seed + i;
-      current = labelled(i, kind, [&] { return mp_honeycomb(source, h); });
+      current = labelled(i, kind, [&] { return detail::mp_honeycomb(source, h, step_origins, corners); });
     } else {
       p.random.seed = params.pushing.random.seed + i;
-      current = labelled(i, kind, [&] { return mp_pushing(source, p); });
+      current = labelled(i, kind, [&] { return detail::mp_pushing(source, p, step_origins, corners); });
+    }
+    if (origins) {
+      if (i > 0) {
+        detail::compose(step, so_far, corners_so_far);
+        if (corners) detail::compose(step_corners, so_far, corners_so_far);
+      }
+      std::swap(so_far, step);
+      std::swap(corners_so_far, step_corners);
     }
     if (observer) observer(i, kind, current);
   }
+  if (origins) *origins = std::move(so_far);
   return current;
 }
 
@@ -165,7 +182,7 @@ SchemeSpec mhp_scheme() {
               throw ParameterError(e.what(), "pattern");
             }
           },
-          [](const Mesh& m, const Params& p, Origins*) {
+          [](const Mesh& m, const Params& p, Origins* origins) {
             MhpParams x;
             x.pattern = p.text("pattern");
             x.honeycomb.tau = p.number("tau_h");
@@ -174,7 +191,7 @@ SchemeSpec mhp_scheme() {
             x.pushing.ratio = p.number("ratio_p");
             x.center = mp_center_from(p);
             x.honeycomb.random = x.pushing.random = mp_random_from(p);
-            return mhp(m, x);
+            return mhp(m, x, {}, origins);
           }};
 }
 

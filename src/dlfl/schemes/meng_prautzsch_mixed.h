@@ -12,6 +12,7 @@
 #include <dlfl/mesh.h>
 #include <dlfl/schemes/meng_prautzsch_honeycomb.h>
 #include <dlfl/schemes/meng_prautzsch_pushing.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -50,6 +51,14 @@ using MhpStepObserver = std::function<void(std::size_t step, char kind, const Me
 /// Errors are those of `mp_honeycomb` and `mp_pushing`, prefixed with the step ("mhp step 3 (P): ..."). A
 /// pattern whose last step would not fit 32-bit handles (the edges grow 4-fold per step) is refused before
 /// the first step.
-Mesh mhp(const Mesh& mesh, const MhpParams& params = {}, const MhpStepObserver& observer = {});
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself): those of the steps (see `mp_honeycomb`
+/// and `mp_pushing`) taken back through every step to the input; an intermediate corner stems from what the
+/// step's corners do (an H corner at an f-face vertex of corner x <- x, at an old vertex <- the side corner
+/// of its edge leaving it; a P corner <- the corner of its central face side or triangle). So an element
+/// stems from an input vertex only if it is that vertex's image, and an f-face or central face made, step by
+/// step, from an input face stays parallel to it. Costs nothing when not asked for.
+Mesh mhp(const Mesh& mesh, const MhpParams& params = {}, const MhpStepObserver& observer = {},
+         Origins* origins = nullptr);
 
 }  // namespace dlfl

@@ -9,7 +9,9 @@
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/schemes/detail/corner_origins.h>
 #include <dlfl/schemes/detail/meng_prautzsch_params.h>
+#include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
@@ -36,7 +38,12 @@ double pushing_extreme_fraction(const glm::dvec3& p, std::span<const glm::dvec3>
   return extreme;
 }
 
-Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
+Mesh mp_pushing(const Mesh& input, const MpPushingParams& params, Origins* origins) {
+  return detail::mp_pushing(input, params, origins, nullptr);
+}
+
+Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origins* origins,
+                        std::vector<Origin>* corners) {
   check_mp_pushing_params(params);
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
@@ -88,7 +95,35 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params) {
     out.set_corner(triangle(c) + 1, nv + m.edge(c).index(), position[m.prev(c).index()]);
     out.set_corner(triangle(c) + 2, nv + m.edge(m.prev(c)).index(), triangle(m.opposite(m.prev(c))) + 0);
   }
-  return detail::require_convex_result(out.finish(), center, "mp-pushing", params.tau, params.ratio);
+  Mesh result = detail::require_convex_result(out.finish(), center, "mp-pushing", params.tau, params.ratio);
+  if (!origins && !corners) return result;
+  const detail::InputHandles in(input);
+  if (corners) {
+    corners->assign(result.corner_capacity(), Origin{});
+    for (std::uint32_t i = 0; i < nc; ++i) {
+      (*corners)[position[i]] = in.corner(i);
+      for (std::uint32_t j = 0; j < 3; ++j) (*corners)[triangle(CornerId(i)) + j] = in.corner(i);
+    }
+  }
+  if (origins) {
+    detail::reset_origins(*origins, result);
+    for (std::uint32_t v = 0; v < nv; ++v) origins->vertices[v] = in.vertex(v);
+    for (std::uint32_t e = 0; e < ne; ++e) origins->vertices[nv + e] = in.edge(e);
+    for (std::uint32_t f = 0; f < nf; ++f) origins->faces[f] = in.face(f);
+    for (std::uint32_t k = 0; k < nc; ++k) origins->faces[nf + k] = in.corner(k);
+    // The central corner of c runs to the point of edge(next c), cutting off next(c); the triangle of c runs
+    // along edge(c), across to the central face (cutting off c), and along edge(prev c).
+    std::vector<Origin> edge_of(result.corner_capacity());
+    for (std::uint32_t i = 0; i < nc; ++i) {
+      const CornerId c(i);
+      edge_of[position[i]] = in.corner(m.next(c).index());
+      edge_of[triangle(c) + 0] = in.edge(m.edge(c).index());
+      edge_of[triangle(c) + 1] = in.corner(i);
+      edge_of[triangle(c) + 2] = in.edge(m.edge(m.prev(c)).index());
+    }
+    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+  }
+  return result;
 }
 
 namespace detail {
@@ -109,13 +144,13 @@ SchemeSpec mp_pushing_scheme() {
           "Meng-Prautzsch corner pushing P: cut every corner off, push the old vertices towards the centre",
           std::move(params),
           {},
-          [](const Mesh& m, const Params& p, Origins*) {
+          [](const Mesh& m, const Params& p, Origins* origins) {
             MpPushingParams q;
             q.tau = p.number("tau");
             q.ratio = p.number("ratio");
             q.center = mp_center_from(p);
             q.random = mp_random_from(p);
-            return mp_pushing(m, q);
+            return dlfl::mp_pushing(m, q, origins);
           }};
 }
 

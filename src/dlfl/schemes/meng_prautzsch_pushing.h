@@ -10,6 +10,7 @@
 
 #include <dlfl/mesh.h>
 #include <dlfl/schemes/detail/meng_prautzsch_common.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -53,6 +54,12 @@ double pushing_extreme_fraction(const glm::dvec3& p, std::span<const glm::dvec3>
 /// are counter-clockwise seen from outside; an edge's side 0 is its corner with the smaller handle, and edges
 /// are numbered in the order of their side-0 corners (assembled directly with `MeshAssembler`, O(size)). The
 /// input is not modified.
-Mesh mp_pushing(const Mesh& mesh, const MpPushingParams& params = {});
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself): an old vertex (moved) <- itself, an
+/// edge point <- its edge; a central face <- its face (on its plane, same size), the triangle at corner c <-
+/// c; each half of an old edge <- that edge, a central face's side between the points of edge(c) and
+/// edge(next c) <- next(c), the corner it cuts off. By kind: vertices V from vertices, E from edges; faces F
+/// from faces, C from corners; edges 2E from edges, C from corners. Costs nothing when not asked for.
+Mesh mp_pushing(const Mesh& mesh, const MpPushingParams& params = {}, Origins* origins = nullptr);
 
 }  // namespace dlfl

@@ -121,13 +121,32 @@ Mesh mlca_quad_step(const Mesh& m) {
   return out.finish();
 }
 
-Mesh mlca_without_point_spheres(const Mesh& input) {
+Mesh mlca_without_point_spheres(const Mesh& input, Origins* origins) {
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);
+  bool quads = true;
   for (FaceId f : m.faces()) {
-    if (!m.is_hole(f) && m.size(f) != 4) return mlca_quad_step(split_dense(m));
+    if (!m.is_hole(f) && m.size(f) != 4) {
+      quads = false;
+      break;
+    }
   }
-  return mlca_quad_step(m);
+  if (quads) {
+    Mesh result = mlca_quad_step(m);
+    if (origins) detail::quad_split_origins(m, result, detail::InputHandles(input), *origins);
+    return result;
+  }
+  const Mesh split = split_dense(m);
+  Mesh result = mlca_quad_step(split);
+  if (origins) {
+    // The step's origins name the split's elements; the split's own origins take them back to the input.
+    const detail::InputHandles in(input);
+    Origins split_origins;
+    detail::quad_split_origins(m, split, in, split_origins);
+    detail::quad_split_origins(split, result, detail::InputHandles(split), *origins);
+    detail::compose(*origins, split_origins, detail::quad_split_corner_origins(m, in));
+  }
+  return result;
 }
 
 }  // namespace
@@ -138,19 +157,26 @@ Mesh split_to_quads(const Mesh& input) {
   return split_dense(dense_mesh(input, storage));
 }
 
-Mesh mlca(const Mesh& input) {
-  std::vector<glm::dvec3> point_spheres;
+Mesh mlca(const Mesh& input, Origins* origins) {
+  std::vector<VertexId> point_spheres;
   for (VertexId v : input.vertices()) {
-    if (input.is_point_sphere(v)) point_spheres.push_back(input.position(v));
+    if (input.is_point_sphere(v)) point_spheres.push_back(v);
   }
-  if (point_spheres.empty()) return mlca_without_point_spheres(input);
-  // Rare: take the point spheres out, subdivide the rest, and put them back unchanged (0-cells).
+  if (point_spheres.empty()) return mlca_without_point_spheres(input, origins);
+  // Rare: take the point spheres out, subdivide the rest, and put them back unchanged (0-cells). The
+  // stripped copy keeps the input's handles, so its origins are the input's.
   Mesh stripped = input;
-  for (VertexId v : input.vertices()) {
-    if (input.is_point_sphere(v)) stripped.delete_vertex(v);
+  for (VertexId v : point_spheres) stripped.delete_vertex(v);
+  Mesh out = stripped.empty() ? Mesh() : mlca_without_point_spheres(stripped, origins);
+  if (origins && stripped.empty()) *origins = Origins{};
+  for (VertexId v : point_spheres) {
+    const VertexId copy = out.create_vertex(input.position(v));
+    if (!origins) continue;
+    origins->vertices.resize(out.vertex_capacity());
+    origins->faces.resize(out.face_capacity());
+    origins->vertices[copy.index()] = origin_of(v);
+    origins->faces[out.face(out.corner(copy)).index()] = origin_of(v);
   }
-  Mesh out = stripped.empty() ? Mesh() : mlca_without_point_spheres(stripped);
-  for (const glm::dvec3& p : point_spheres) out.create_vertex(p);
   return out;
 }
 
@@ -161,7 +187,7 @@ SchemeSpec mlca_scheme() {
           "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed",
           {},
           {},
-          [](const Mesh& m, const Params&, Origins*) { return mlca(m); }};
+          [](const Mesh& m, const Params&, Origins* origins) { return mlca(m, origins); }};
 }
 
 }  // namespace detail

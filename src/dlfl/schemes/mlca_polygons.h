@@ -3,6 +3,7 @@
 // meshes: the d = 2 case of the scheme, for quad surfaces. Volumes and non-manifold complexes live in cells/.
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -30,6 +31,17 @@ Mesh split_to_quads(const Mesh& mesh);
 /// positions. Point spheres are 0-cells, which cell averaging with creases leaves in place: they are copied
 /// unchanged and come last in the output, after the vertices of the quad surface.
 /// The input is not modified.
-Mesh mlca(const Mesh& mesh);
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself). On a quad mesh those of
+/// `catmull_clark` (the same connectivity): vertex points <- vertices, edge points <- edges, face points <-
+/// faces, quad k <- corner k, halves of old edges <- their edge, the edge from the edge point of edge(c) to
+/// the face point of face(c) <- corner c. After a split, the rule is applied to the split quads and taken
+/// back through the split, whose vertices come from vertices, edges and faces, whose edges come from edges
+/// (halves) and corners (inner edges), and whose quads and their corners come from the corner each is made
+/// for: so vertex points <- vertices, edges or faces, edge points <- edges or corners, face points and
+/// quads <- corners, edges <- edges or corners. By kind, after a split: vertices V from vertices, 3E from
+/// edges, F from faces, 2C from corners; faces 4C from corners; edges 4E from edges, 6C from corners. A
+/// copied point sphere and its face <- its vertex. Costs nothing when not asked for.
+Mesh mlca(const Mesh& mesh, Origins* origins = nullptr);
 
 }  // namespace dlfl

@@ -1,6 +1,8 @@
 #pragma once
 // Where the elements of a scheme's output come from: one element of the input for every output vertex, edge
 // and face, so that a user can carry their own per-element data across a subdivision step.
+// Every scheme function takes an optional `Origins*`; its header says what each output element's origin is,
+// and docs/schemes.md tables them.
 
 #include <cstdint>
 #include <vector>

@@ -9,6 +9,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
@@ -72,7 +73,7 @@ void check_triangles(const Mesh& m) {
 //   3 s0 + 1 at V + face(s1), twin 3 s1 + 1;        3 s1 + 1 at V + face(s0), twin 3 s0 + 1.
 // Every output corner is set exactly once (corner 0 and 1 of T(s) for the edge leaving s, corner 2 of T(r)
 // for the edge leaving prev(r)), so one pass over the edges builds the whole connectivity.
-Mesh sqrt3(const Mesh& input) {
+Mesh sqrt3(const Mesh& input, Origins* origins) {
   check_triangles(input);  // on the input, so that errors name its own handles, not compacted ones
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
@@ -121,7 +122,28 @@ Mesh sqrt3(const Mesh& input) {
     const double alpha = n < weight_table.size() ? weight_table[n] : sqrt3_alpha(n);
     out.set_position(v, (1.0 - alpha) * m.position(VertexId(v)) + (alpha / n) * sum[v]);
   }
-  return out.finish();
+  Mesh result = out.finish();
+  if (origins) {
+    const detail::InputHandles in(input);
+    detail::reset_origins(*origins, result);
+    for (std::uint32_t v = 0; v < nv; ++v) origins->vertices[v] = in.vertex(v);
+    for (std::uint32_t f = 0; f < nf; ++f) origins->vertices[face_base + f] = in.face(f);
+    for (std::uint32_t k = 0; k < nc; ++k) origins->faces[k] = in.corner(k);
+    // Corner 3c + i of T(c) = (x, G, F): i = 0 runs x -> G, the edge from x to the face point of the face
+    // across edge(c), whose corner at x is next(opposite(c)); 1 is the flipped edge(c); 2 runs F -> x.
+    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) {
+      const CornerId c(k / 3);
+      switch (k % 3) {
+        case 0:
+          return in.corner(m.next(m.opposite(c)).index());
+        case 1:
+          return in.edge(m.edge(c).index());
+        default:
+          return in.corner(c.index());
+      }
+    });
+  }
+  return result;
 }
 
 namespace detail {
@@ -131,7 +153,7 @@ SchemeSpec sqrt3_scheme() {
           "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes",
           {},
           {},
-          [](const Mesh& m, const Params&, Origins*) { return sqrt3(m); }};
+          [](const Mesh& m, const Params&, Origins* origins) { return sqrt3(m, origins); }};
 }
 
 }  // namespace detail

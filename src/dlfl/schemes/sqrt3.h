@@ -2,6 +2,7 @@
 // Kobbelt's sqrt(3) subdivision on triangle meshes.
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -29,6 +30,12 @@ namespace dlfl {
 /// every face with its neighbours, so no output triangle belongs to one old face, and sqrt(3)'s boundary rule
 /// is not implemented: open meshes are refused), or if the mesh has a point sphere (naming its vertex). The
 /// input is not modified. O(size), in a few sequential passes.
-Mesh sqrt3(const Mesh& mesh);
+///
+/// Origins (filled when `origins` is given; handles of `mesh` itself): a vertex point <- its vertex, a face
+/// point <- its face; triangle k <- corner k; a flipped edge (between the face points on the two sides of an
+/// old edge) <- that edge, the edge from vertex(c) to the face point of face(c) <- c. By kind: vertices V
+/// from vertices, F from faces; faces C from corners; edges E from edges, C from corners. Costs nothing when
+/// not asked for.
+Mesh sqrt3(const Mesh& mesh, Origins* origins = nullptr);
 
 }  // namespace dlfl

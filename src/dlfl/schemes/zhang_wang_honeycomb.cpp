@@ -113,7 +113,8 @@ void check_zhang_wang_params(const ZhangWangParams& p) {
   check_unit("alpha", p.alpha);
 }
 
-Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombOrigin* origin) {
+Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombOrigin* origin,
+                          Origins* origins) {
   check_zhang_wang_params(p);
 
   // The CCV of every input face: its control point, or its centroid.
@@ -131,7 +132,7 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombO
       points[i] = (1.0 - b) * q + b * mid;
     }
   };
-  detail::HoneycombRemesh out = detail::honeycomb_remesh(mesh, face_points, true);
+  detail::HoneycombRemesh out = detail::honeycomb_remesh(mesh, face_points, true, origins);
   Mesh& result = out.mesh;
   const FaceAttribute<glm::dvec3> result_points =
       result.add_face_attribute<glm::dvec3>(face_point_attribute, unset_point);
@@ -223,13 +224,13 @@ SchemeSpec zhang_wang_honeycomb_scheme() {
               .in(0, 1),
       },
       {},
-      [](const Mesh& m, const Params& p, Origins*) {
+      [](const Mesh& m, const Params& p, Origins* origins) {
         ZhangWangParams z;
         if (p.get("a").kind() != Value::Kind::text) z.a = p.number("a");  // else the keyword
         z.b = p.number("b");
         z.c = p.number("c");
         z.alpha = p.number("alpha");
-        return zhang_wang_honeycomb(m, z);
+        return zhang_wang_honeycomb(m, z, nullptr, origins);
       }};
 }
 

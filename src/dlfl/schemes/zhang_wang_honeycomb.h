@@ -25,6 +25,7 @@
 #include <vector>
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -82,8 +83,10 @@ struct HoneycombOrigin {
 /// result has no attribute but "face_point".
 /// The shrunken copy of a face starts at the point for the face's first corner (the point on the edge leaving
 /// it). When `origin` is given it receives where each new face came from. Throws InvalidArgument for a bad
-/// parameter or a non-finite new point.
-Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p = {}, HoneycombOrigin* origin = nullptr);
+/// parameter or a non-finite new point. When `origins` is given it receives the origin of every element,
+/// those of `honeycomb` (dlfl/schemes/honeycomb.h); it costs nothing when not asked for.
+Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p = {}, HoneycombOrigin* origin = nullptr,
+                          Origins* origins = nullptr);
 
 /// The limit of the centre of face f under repeated steps, formula (15): with q its CCV (or centroid),
 /// p_bar its centroid and n its size,

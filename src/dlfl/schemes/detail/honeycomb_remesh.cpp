@@ -6,8 +6,10 @@
 
 namespace dlfl::detail {
 
-HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_points,
-                                 bool want_face_of_vertex) {
+HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_points, bool want_face_of_vertex,
+                                 Origins* origins) {
+  // The origins of faces around vertices and of front edges need the front corners.
+  want_face_of_vertex = want_face_of_vertex || origins;
   std::size_t C = 0, F = 0, P = 0;  // corners and faces of 2 or more corners, point spheres
   std::uint32_t max_n = 0;
   for (FaceId f : mesh.faces()) {
@@ -68,8 +70,12 @@ HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_poin
 
   // Step 2: join the two new vertices of each edge, across the edge, through their back corners. Each back
   // corner keeps its vertex and outgoing edge through every insert_edge, so the map stays valid.
+  std::vector<EdgeId> edge_across;  // by new edge handle: the input edge it crosses, when origins are wanted
+  if (origins) edge_across.assign(result.edge_capacity() + mesh.num_edges(), EdgeId());
   for (EdgeId e : mesh.edges()) {
-    result.insert_edge(back_of[mesh.corner(e, 0).index()], back_of[mesh.corner(e, 1).index()]);
+    const InsertEdgeResult r =
+        result.insert_edge(back_of[mesh.corner(e, 0).index()], back_of[mesh.corner(e, 1).index()]);
+    if (origins) edge_across[r.edge.index()] = e;
   }
 
   // The front face's side from the point of corner c to the point of next(c) joins two points next to the old
@@ -79,6 +85,30 @@ HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_poin
       if (!mesh.edge(c).valid()) continue;  // a point sphere's corner
       out.face_of_vertex[mesh.vertex(mesh.next(c)).index()] =
           result.face(result.opposite(front_of[c.index()]));
+    }
+  }
+  if (origins) {
+    origins->vertices.assign(result.vertex_capacity(), Origin{});
+    origins->edges.assign(result.edge_capacity(), Origin{});
+    origins->faces.assign(result.face_capacity(), Origin{});
+    for (CornerId c : mesh.corners()) {
+      if (!mesh.edge(c).valid()) continue;  // a point sphere's corner
+      origins->vertices[result.vertex(back_of[c.index()]).index()] = origin_of(c);
+      origins->edges[result.edge(front_of[c.index()]).index()] = origin_of(mesh.next(c));
+    }
+    for (std::uint32_t e = 0; e < edge_across.size(); ++e) {
+      if (edge_across[e].valid()) origins->edges[e] = origin_of(edge_across[e]);
+    }
+    for (FaceId f : mesh.faces()) {
+      if (out.face_of_face[f.index()].valid())
+        origins->faces[out.face_of_face[f.index()].index()] = origin_of(f);
+    }
+    for (VertexId v : mesh.vertices()) {
+      const FaceId around = out.face_of_vertex[v.index()];
+      origins->faces[around.index()] = origin_of(v);
+      // A point sphere's copy (its vertex is not made for a corner).
+      if (mesh.is_point_sphere(v))
+        origins->vertices[result.vertex(result.first_corner(around)).index()] = origin_of(v);
     }
   }
   return out;

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl::detail {
 
@@ -23,8 +24,8 @@ struct HoneycombRemesh {
   /// By input face handle: the new face that is the face's shrunken copy (its front face); invalid for
   /// removed faces and for point spheres (whose vertex is copied and has no front face).
   std::vector<FaceId> face_of_face;
-  /// By input vertex handle, filled only when asked for: the new face around the vertex (for a point sphere,
-  /// the copied point sphere's face); invalid for removed vertices.
+  /// By input vertex handle, filled only when asked for (or when origins are): the new face around the
+  /// vertex (for a point sphere, the copied point sphere's face); invalid for removed vertices.
   std::vector<FaceId> face_of_vertex;
 };
 
@@ -34,6 +35,12 @@ struct HoneycombRemesh {
 /// for every live edge in handle order, INSERTEDGE between the back corners of the two points made for its
 /// two sides. V' = 2E, E' = 3E, F' = F + V, every new vertex 3-valent. All elements are reserved up front.
 /// `face_points` is called once per face, in handle order.
-HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_points, bool want_face_of_vertex);
+///
+/// When `origins` is given it receives the honeycomb's origins (see `honeycomb`): a new vertex <- the corner
+/// it is made for, a front face <- its face, a vertex's face <- the vertex, a front face's side from the
+/// point of c to the point of next(c) <- next(c) (the corner it cuts off), an inserted edge <- the edge it
+/// crosses; a copied point sphere and its face <- its vertex.
+HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_points, bool want_face_of_vertex,
+                                 Origins* origins = nullptr);
 
 }  // namespace dlfl::detail

@@ -24,4 +24,39 @@ void assemble_quad_split(const Mesh& m, MeshAssembler& out) {
   }
 }
 
+void quad_split_origins(const Mesh& m, const Mesh& out, const InputHandles& in, Origins& origins) {
+  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
+  const auto ne = static_cast<std::uint32_t>(m.num_edges());
+  const auto nf = static_cast<std::uint32_t>(m.num_faces());
+  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+  reset_origins(origins, out);
+  for (std::uint32_t v = 0; v < nv; ++v) origins.vertices[v] = in.vertex(v);
+  for (std::uint32_t e = 0; e < ne; ++e) origins.vertices[nv + e] = in.edge(e);
+  for (std::uint32_t f = 0; f < nf; ++f) origins.vertices[nv + ne + f] = in.face(f);
+  for (std::uint32_t k = 0; k < nc; ++k) origins.faces[k] = in.corner(k);
+  // Quad k's corners, in order: at the vertex point (edge along edge(k)), at the edge point of edge(k) (edge
+  // into the face point), at the face point (edge out to the edge point of edge(prev k), corner prev(k)'s
+  // inner edge), at the edge point of edge(prev k) (edge along edge(prev k)).
+  set_edge_origins(origins, out, [&](std::uint32_t corner) {
+    const CornerId c(corner / 4);
+    switch (corner % 4) {
+      case 0:
+        return in.edge(m.edge(c).index());
+      case 1:
+        return in.corner(c.index());
+      case 2:
+        return in.corner(m.prev(c).index());
+      default:
+        return in.edge(m.edge(m.prev(c)).index());
+    }
+  });
+}
+
+std::vector<Origin> quad_split_corner_origins(const Mesh& m, const InputHandles& in) {
+  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+  std::vector<Origin> corners(4 * std::size_t(nc));
+  for (std::uint32_t k = 0; k < 4 * nc; ++k) corners[k] = in.corner(k / 4);
+  return corners;
+}
+
 }  // namespace dlfl::detail

@@ -4,6 +4,7 @@
 
 #include <dlfl/mesh.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/scheme_origins.h>
 
 namespace dlfl::detail {
 
@@ -13,5 +14,15 @@ namespace dlfl::detail {
 /// face points after them. `out` must have V + E + F vertices and one quad per corner of `m`. Quads of hole
 /// faces are holes. Positions are the caller's.
 void assemble_quad_split(const Mesh& m, MeshAssembler& out);
+
+/// The origins of the split `out` of dense `m` (as assembled above), with `in` naming m's elements in the
+/// caller's input: vertex points <- vertices, edge points <- edges, face points <- faces; quad k <- corner k;
+/// each half of an old edge <- that edge; the edge from the edge point of edge(c) to the face point of
+/// face(c) <- corner c.
+void quad_split_origins(const Mesh& m, const Mesh& out, const InputHandles& in, Origins& origins);
+
+/// The origins of the split's corners, by corner handle, for composing the split with a later step: the four
+/// corners of quad k <- corner k.
+std::vector<Origin> quad_split_corner_origins(const Mesh& m, const InputHandles& in);
 
 }  // namespace dlfl::detail

@@ -1,0 +1,51 @@
+#pragma once
+// Internal to the schemes: building origin maps (dlfl/schemes/origins.h). A scheme that reads a dense copy of
+// its input numbers its output from the copy's handles; InputHandles turns those back into the input's own.
+// Composite schemes (dual-honeycomb-dual, MLCA after a split, MHP) chain the maps of their steps with
+// `compose`, which needs the origins of a step's corners as well when the next step's origins name corners.
+
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
+
+namespace dlfl::detail {
+
+/// The input's own handle behind each index of its dense copy (see `dense_mesh`): the k-th live element of
+/// each kind. Nothing is stored for a kind without removed elements (the map is the identity).
+class InputHandles {
+ public:
+  explicit InputHandles(const Mesh& input);
+  Origin vertex(std::uint32_t dense) const { return {Origin::Kind::vertex, map(vertices_, dense)}; }
+  Origin edge(std::uint32_t dense) const { return {Origin::Kind::edge, map(edges_, dense)}; }
+  Origin face(std::uint32_t dense) const { return {Origin::Kind::face, map(faces_, dense)}; }
+  Origin corner(std::uint32_t dense) const { return {Origin::Kind::corner, map(corners_, dense)}; }
+
+ private:
+  static std::uint32_t map(const std::vector<std::uint32_t>& handles, std::uint32_t k) {
+    return handles.empty() ? k : handles[k];
+  }
+  std::vector<std::uint32_t> vertices_, edges_, faces_, corners_;
+};
+
+/// Sizes `origins` to the capacities of `output`, every slot Kind::none.
+void reset_origins(Origins& origins, const Mesh& output);
+
+/// Sets the origin of every live edge of `output` to `of_corner(k)`, k the index of the edge's side-0 corner
+/// (the origin of the edge leaving output corner k).
+template <class OfCorner>
+void set_edge_origins(Origins& origins, const Mesh& output, const OfCorner& of_corner) {
+  for (EdgeId e : output.edges()) origins.edges[e.index()] = of_corner(output.corner(e, 0).index());
+}
+
+/// An origin that names an element of an intermediate mesh M, taken back to M's own origin: `earlier` says
+/// where M's vertices, edges and faces come from, `earlier_corners` (by corner handle) where its corners do.
+Origin compose(const Origin& later, const Origins& earlier, std::span<const Origin> earlier_corners);
+
+/// `compose` on every entry, in place.
+void compose(Origins& later, const Origins& earlier, std::span<const Origin> earlier_corners);
+void compose(std::vector<Origin>& later, const Origins& earlier, std::span<const Origin> earlier_corners);
+
+}  // namespace dlfl::detail
