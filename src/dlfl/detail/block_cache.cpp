@@ -21,7 +21,7 @@ constexpr std::size_t huge = std::size_t(2) << 20;
 #if defined(DLFL_NO_BLOCK_CACHE)
 
 // Compiled out: nothing is kept, and every block is exactly the array, so that AddressSanitizer sees the
-// first byte past its end and poisons it once freed (the sized delete also checks the size it is given back).
+// first byte past its end and poisons it once freed.
 void set_block_cache_limit(std::size_t) {}
 
 std::size_t block_cache_size() { return 0; }
@@ -32,7 +32,7 @@ namespace detail {
 
 void* acquire_block(std::size_t bytes) { return ::operator new(bytes); }
 
-void release_block(void* p, std::size_t bytes) noexcept { ::operator delete(p, bytes); }
+void release_block(void* p, std::size_t) noexcept { ::operator delete(p); }
 
 }  // namespace detail
 
