@@ -261,8 +261,8 @@ TEST_CASE("zhang-wang: the double step matrix has the eigenvalues of formula (9)
   // b^2 (1 + cos(2 pi k / n)) / 2 for k = 1 .. n-1 on the Fourier vectors of the points (whose sum is 0, so
   // q's row does not see them). Together that is all n + 1 eigenvalues.
   for (int n = 3; n <= 9; ++n) {
-    for (const auto& [a_given, b] :
-         std::vector<std::pair<double, double>>{{-1, 2.0 / 3}, {0.3, 0.5}, {0.9, 0.8}}) {
+    for (const auto& given : std::vector<std::pair<double, double>>{{-1, 2.0 / 3}, {0.3, 0.5}, {0.9, 0.8}}) {
+      const double a_given = given.first, b = given.second;  // not bindings: clang 14 cannot capture them
       ZhangWangParams p;
       p.b = b;
       if (a_given >= 0) p.a = a_given;
@@ -350,8 +350,10 @@ TEST_CASE("zhang-wang: the parameter bounds of formula (12) and of the eigenvalu
     const double b = 0.6;
     const TensionBounds e = zhang_wang_eigen_bounds(n, b);
     const double subdominant = b * b * (1 + std::cos(2 * std::numbers::pi / n)) / 2;
-    for (const auto& [a, inside] : std::vector<std::pair<double, bool>>{
+    for (const auto& sample : std::vector<std::pair<double, bool>>{
              {e.lower + 1e-3, true}, {e.lower - 1e-3, false}, {e.upper - 1e-3, true}}) {
+      const double a = sample.first;  // not a binding: clang 14 cannot capture one in CAPTURE's lambda
+      const bool inside = sample.second;
       if (a < 0 || a > 1) continue;
       ZhangWangParams p;
       p.a = a;
@@ -404,8 +406,10 @@ TEST_CASE("zhang-wang: hole faces stay holes and point spheres are copied") {
 
 TEST_CASE("zhang-wang: bad parameters are refused naming them") {
   const Mesh m = test::cube();
-  for (const auto& [name, value] : std::vector<std::pair<const char*, double>>{
+  for (const auto& bad : std::vector<std::pair<const char*, double>>{
            {"a", 1.5}, {"b", -0.1}, {"c", 2}, {"alpha", std::nan("")}}) {
+    const char* name = bad.first;  // not a binding: clang 14 cannot capture one in CAPTURE's lambda
+    const double value = bad.second;
     CAPTURE(name);
     try {
       apply_scheme(m, "honeycomb-zw", resolve_scheme_params("honeycomb-zw", {{name, value}}));

@@ -2,13 +2,30 @@
 
 #include <dlfl/errors.h>
 
+#include <cstdint>
+#include <string>
+
 namespace dlfl {
+
+namespace {
+[[noreturn]] void too_many(const std::string& count) {
+  throw InvalidArgument("MeshAssembler: " + count + " do not fit 32-bit handles (at most " +
+                        std::to_string(MeshAssembler::max_count) + ")");
+}
+}  // namespace
+
+void MeshAssembler::check_counts(std::size_t num_vertices, std::size_t num_faces, std::size_t num_corners) {
+  if (num_vertices > max_count) too_many(std::to_string(num_vertices) + " vertices");
+  if (num_faces > max_count) too_many(std::to_string(num_faces) + " faces");
+  if (num_corners > max_count) too_many(std::to_string(num_corners) + " corners");
+}
 
 MeshAssembler::MeshAssembler(std::size_t num_vertices, std::span<const std::uint32_t> offsets) {
   if (offsets.empty() || offsets.front() != 0)
     throw InvalidArgument("MeshAssembler: offsets must start at 0");
   const std::size_t nf = offsets.size() - 1;
   const std::size_t nc = offsets.back();
+  check_counts(num_vertices, nf, nc);
   mesh_.positions_.resize(num_vertices);
   mesh_.vertex_corner_.assign(num_vertices, CornerId());
   mesh_.corners_.resize(nc);
@@ -18,6 +35,10 @@ MeshAssembler::MeshAssembler(std::size_t num_vertices, std::span<const std::uint
     const std::uint32_t begin = offsets[f], end = offsets[f + 1];
     if (end <= begin + 1)
       throw InvalidArgument("MeshAssembler: face " + std::to_string(f) + " has < 2 corners");
+    if (end > nc) {  // an offset past the last one would write beyond the corners
+      throw InvalidArgument("MeshAssembler: face " + std::to_string(f) + " ends at corner " +
+                            std::to_string(end) + ", past the " + std::to_string(nc) + " corners");
+    }
     mesh_.faces_[f] = {CornerId(begin), end - begin, true, false};
     for (std::uint32_t k = begin; k < end; ++k) {
       auto& c = mesh_.corners_[k];
@@ -30,7 +51,11 @@ MeshAssembler::MeshAssembler(std::size_t num_vertices, std::span<const std::uint
 
 MeshAssembler::MeshAssembler(std::size_t num_vertices, std::size_t num_faces, std::uint32_t face_size) {
   if (face_size < 2) throw InvalidArgument("MeshAssembler: faces need at least 2 corners");
+  if (num_faces > SIZE_MAX / face_size) {  // the corner count itself would wrap
+    too_many(std::to_string(num_faces) + " faces of " + std::to_string(face_size) + " corners");
+  }
   const std::size_t nc = num_faces * face_size;
+  check_counts(num_vertices, num_faces, nc);
   mesh_.positions_.resize(num_vertices);
   mesh_.vertex_corner_.assign(num_vertices, CornerId());
   mesh_.corners_.resize(nc);

@@ -29,6 +29,13 @@ class MeshAssembler {
   /// `num_faces` faces of `face_size` corners each.
   MeshAssembler(std::size_t num_vertices, std::size_t num_faces, std::uint32_t face_size);
 
+  /// The most vertices, faces or corners an assembled mesh may have: every index and every count stays
+  /// below the invalid handle 2^32 - 1.
+  static constexpr std::size_t max_count = 0xFFFFFFFEu;
+  /// Throws InvalidArgument naming the count if one exceeds `max_count`. Both constructors call it before
+  /// they allocate anything; a count that does not even fit std::size_t is refused by them the same way.
+  static void check_counts(std::size_t num_vertices, std::size_t num_faces, std::size_t num_corners);
+
   std::size_t num_vertices() const { return mesh_.positions_.size(); }
   std::size_t num_faces() const { return mesh_.faces_.size(); }
   std::size_t num_corners() const { return mesh_.corners_.size(); }

@@ -16,6 +16,32 @@ namespace {
 
 constexpr std::size_t huge = std::size_t(2) << 20;
 
+}  // namespace
+
+#if defined(DLFL_NO_BLOCK_CACHE)
+
+// Compiled out: nothing is kept, and every block is exactly the array, so that AddressSanitizer sees the
+// first byte past its end and poisons it once freed.
+void set_block_cache_limit(std::size_t) {}
+
+std::size_t block_cache_size() { return 0; }
+
+void release_block_cache() {}
+
+namespace detail {
+
+void* acquire_block(std::size_t bytes) { return ::operator new(bytes); }
+
+void release_block(void* p, std::size_t) noexcept { ::operator delete(p); }
+
+}  // namespace detail
+
+#else
+
+namespace {
+
+std::size_t rounded(std::size_t bytes) { return (bytes + huge - 1) / huge * huge; }
+
 struct Block {
   void* p;
   std::size_t bytes;
@@ -70,6 +96,7 @@ void release_block_cache() {
 namespace detail {
 
 void* acquire_block(std::size_t bytes) {
+  bytes = rounded(bytes);
   {
     Cache& c = cache();
     std::lock_guard lock(c.mutex);
@@ -89,6 +116,7 @@ void* acquire_block(std::size_t bytes) {
 }
 
 void release_block(void* p, std::size_t bytes) noexcept {
+  bytes = rounded(bytes);
   Cache& c = cache();
   std::lock_guard lock(c.mutex);
   if (bytes > c.limit) {
@@ -99,6 +127,12 @@ void release_block(void* p, std::size_t bytes) noexcept {
   c.blocks.push_back({p, bytes});
   c.total += bytes;
 }
+
+}  // namespace detail
+
+#endif  // DLFL_NO_BLOCK_CACHE
+
+namespace detail {
 
 void advise_huge_pages(void* p, std::size_t bytes) noexcept {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)

@@ -3,6 +3,8 @@
 // transparent huge pages. The operators chase links across arrays of hundreds of megabytes; with 4 KiB pages
 // nearly every hop is a TLB miss, with 2 MiB pages almost none. Large blocks go through a cache of freed
 // blocks (dlfl/detail/block_cache.h), so they come back already mapped. Small blocks use the ordinary heap.
+// The large path stays out of line, in the library, so whether the cache is compiled in is decided there
+// alone: every translation unit agrees on it whatever macros it was compiled with.
 
 #include <cstddef>
 #include <new>
@@ -24,17 +26,16 @@ struct LargeAllocator {
   T* allocate(std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < huge) return static_cast<T*>(::operator new(bytes));
-    return static_cast<T*>(acquire_block(rounded(bytes)));
+    return static_cast<T*>(acquire_block(bytes));
   }
   void deallocate(T* p, std::size_t n) {
     const std::size_t bytes = n * sizeof(T);
     if (bytes < huge) {
       ::operator delete(p);
     } else {
-      release_block(p, rounded(bytes));
+      release_block(p, bytes);
     }
   }
-  static std::size_t rounded(std::size_t bytes) { return (bytes + huge - 1) / huge * huge; }
   template <class U>
   bool operator==(const LargeAllocator<U>&) const {
     return true;
