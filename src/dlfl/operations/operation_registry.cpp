@@ -11,10 +11,8 @@ namespace {
 const std::vector<OperationSpec>& table() {
   static const std::vector<OperationSpec> all = [] {
     std::vector<OperationSpec> ops;
-    // One line per family of operations: adding an operation touches its own file and this list.
-    for (auto family : {detail::euler_operation_specs, detail::face_point_operation_specs,
-                        detail::whole_mesh_operation_specs, detail::history_operation_specs}) {
-      for (auto& op : family()) ops.push_back(std::move(op));
+    for (auto declarations : detail::operation_files) {
+      for (auto& op : declarations()) ops.push_back(std::move(op));
     }
     std::sort(ops.begin(), ops.end(), [](const auto& a, const auto& b) { return a.name < b.name; });
     return ops;
@@ -25,7 +23,8 @@ const std::vector<OperationSpec>& table() {
 }  // namespace
 
 namespace {
-OperationSpec declared(std::string name, OperationSpec::Kind kind, std::string doc, std::vector<ParamSpec> params) {
+OperationSpec declared(std::string name, OperationSpec::Kind kind, std::string doc,
+                       std::vector<ParamSpec> params) {
   OperationSpec op;
   op.name = std::move(name);
   op.kind = kind;
@@ -35,8 +34,8 @@ OperationSpec declared(std::string name, OperationSpec::Kind kind, std::string d
 }
 }  // namespace
 
-OperationSpec edit_operation(std::string name, std::string doc, std::vector<ParamSpec> params, std::string counts,
-                             EditFunction edit, CheckFunction check) {
+OperationSpec edit_operation(std::string name, std::string doc, std::vector<ParamSpec> params,
+                             std::string counts, EditFunction edit, CheckFunction check) {
   OperationSpec op = declared(std::move(name), OperationSpec::Kind::edit, std::move(doc), std::move(params));
   op.counts = std::move(counts);
   op.edit = std::move(edit);
@@ -46,7 +45,8 @@ OperationSpec edit_operation(std::string name, std::string doc, std::vector<Para
 
 OperationSpec replace_operation(std::string name, std::string doc, std::vector<ParamSpec> params,
                                 ReplaceFunction replace, CheckFunction check) {
-  OperationSpec op = declared(std::move(name), OperationSpec::Kind::replace, std::move(doc), std::move(params));
+  OperationSpec op =
+      declared(std::move(name), OperationSpec::Kind::replace, std::move(doc), std::move(params));
   op.replace = std::move(replace);
   op.check = std::move(check);
   return op;

@@ -1,20 +1,25 @@
 #pragma once
-// Internal to the operation registry: the declaration function of each operation, defined next to its
-// implementation and listed once in operation_registry.cpp.
+// Internal to the operation registry: the table of operation files. Each file declares its operations in a
+// function defined next to their implementation; adding a file of operations adds its declaration and its
+// entry here, and nothing else.
 
+#include <array>
 #include <vector>
 
 #include <dlfl/operations/operation.h>
 
 namespace dlfl::detail {
 
-// The kernel's Euler operators (euler_operations.cpp).
-std::vector<OperationSpec> euler_operation_specs();
-// set_face_point (set_face_point.cpp).
-std::vector<OperationSpec> face_point_operation_specs();
-// load, mesh, subdivide (whole_mesh_operations.cpp).
-std::vector<OperationSpec> whole_mesh_operation_specs();
-// undo, redo, begin_group, end_group, clear_history (history_operations.cpp).
-std::vector<OperationSpec> history_operation_specs();
+std::vector<OperationSpec> euler_operation_specs();       // euler_operations.cpp
+std::vector<OperationSpec> face_point_operation_specs();  // set_face_point.cpp
+std::vector<OperationSpec> whole_mesh_operation_specs();  // whole_mesh_operations.cpp
+std::vector<OperationSpec> history_operation_specs();     // history_operations.cpp
+
+inline constexpr std::array operation_files = {
+    &euler_operation_specs,
+    &face_point_operation_specs,
+    &whole_mesh_operation_specs,
+    &history_operation_specs,
+};
 
 }  // namespace dlfl::detail
