@@ -12,14 +12,13 @@ namespace dlfl::detail {
 
 std::vector<OperationSpec> euler_operation_specs();       // euler_operations.cpp
 std::vector<OperationSpec> face_point_operation_specs();  // set_face_point.cpp
+std::vector<OperationSpec> attribute_operation_specs();   // set_attribute.cpp
 std::vector<OperationSpec> whole_mesh_operation_specs();  // whole_mesh_operations.cpp
 std::vector<OperationSpec> history_operation_specs();     // history_operations.cpp
 
 inline constexpr std::array operation_files = {
-    &euler_operation_specs,
-    &face_point_operation_specs,
-    &whole_mesh_operation_specs,
-    &history_operation_specs,
+    &euler_operation_specs,      &face_point_operation_specs, &attribute_operation_specs,
+    &whole_mesh_operation_specs, &history_operation_specs,
 };
 
 }  // namespace dlfl::detail
