@@ -69,13 +69,13 @@ struct Step {
     set_hole,          ///< uses face, hole
   };
   Kind kind = Kind::create_vertex;
+  bool hole = false;  // set_hole only; beside `kind`, where it takes no room of its own
   VertexId vertex{};
   EdgeId edge{};
   FaceId face{};
   CornerId corner1{};
   CornerId corner2{};
   glm::dvec3 position{0.0};
-  bool hole = false;
   detail::Reuse reuse{};
 };
 
