@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
@@ -77,10 +78,7 @@ Mesh sqrt3(const Mesh& input, Origins* origins) {
   check_triangles(input);  // on the input, so that errors name its own handles, not compacted ones
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());  // = 3 nf
+  const auto [nv, ne, nf, nc] = dense_counts(m);                // nc = 3 nf
   const std::uint32_t face_base = nv;                           // vertex of the face point of face f
   MeshAssembler out(std::size_t(nv) + nf, nc, 3);
 
