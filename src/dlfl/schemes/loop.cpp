@@ -4,12 +4,11 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include <dlfl/dense_mesh.h>
-#include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/require_triangles.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
@@ -21,24 +20,6 @@ namespace {
 double loop_beta(std::uint32_t n) {
   const double c = 3.0 / 8.0 + std::cos(2.0 * std::numbers::pi / n) / 4.0;
   return (5.0 / 8.0 - c * c) / n;
-}
-
-// Refuses point spheres and non-triangles, in face order.
-void check_triangles(const Mesh& m) {
-  for (FaceId f : m.faces()) {
-    const std::uint32_t n = m.size(f);
-    if (n == 3) [[likely]]
-      continue;
-    if (n == 1) {  // only a point sphere has a one-corner face (a self-loop is illegal)
-      throw TopologyError("loop: " + to_string(m.vertex(m.first_corner(f))) + " is a point sphere (no edge)");
-    }
-    if (m.is_hole(f)) {
-      throw TopologyError("loop: " + to_string(f) + " is a hole (a boundary loop) with " + std::to_string(n) +
-                          " corners; Loop subdivision needs triangles, holes included");
-    }
-    throw TopologyError("loop: " + to_string(f) + " has " + std::to_string(n) +
-                        " corners; Loop subdivision needs triangles");
-  }
 }
 
 }  // namespace
@@ -78,7 +59,8 @@ void check_triangles(const Mesh& m) {
 // since prev(next(s)) = s, so edge(prev(next(s))) = e. So one pass over the faces fills the inner corners
 // (3c + 1 and the central triangles) and one pass over the edges fills the rest, with the edge points.
 Mesh loop(const Mesh& input, Origins* origins) {
-  check_triangles(input);  // on the input, so that errors name its own handles, not compacted ones
+  // On the input, so that errors name its own handles, not compacted ones.
+  detail::require_triangles(input, "loop", "Loop subdivision", detail::TriangleHoles::allowed);
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
   const auto [nv, ne, nf, nc] = dense_counts(m);                // nc = 3 nf

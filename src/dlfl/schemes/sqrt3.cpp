@@ -4,12 +4,11 @@
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <string>
 #include <vector>
 
 #include <dlfl/dense_mesh.h>
-#include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/require_triangles.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
@@ -19,26 +18,6 @@ namespace {
 
 // Kobbelt's vertex weight a_n for valence n.
 double sqrt3_alpha(std::uint32_t n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; }
-
-// Refuses point spheres, holes and non-triangles, in face order.
-void check_triangles(const Mesh& m) {
-  for (FaceId f : m.faces()) {
-    const std::uint32_t n = m.size(f);
-    if (n == 3 && !m.is_hole(f)) [[likely]]
-      continue;
-    if (n == 1) {  // only a point sphere has a one-corner face (a self-loop is illegal)
-      throw TopologyError("sqrt3: " + to_string(m.vertex(m.first_corner(f))) +
-                          " is a point sphere (no edge)");
-    }
-    if (m.is_hole(f)) {
-      throw TopologyError(
-          "sqrt3: " + to_string(f) + " is a hole (a boundary loop) with " + std::to_string(n) +
-          " corners; sqrt(3) subdivision has no boundary rule and needs a closed triangle mesh");
-    }
-    throw TopologyError("sqrt3: " + to_string(f) + " has " + std::to_string(n) +
-                        " corners; sqrt(3) subdivision needs triangles");
-  }
-}
 
 }  // namespace
 
@@ -75,7 +54,8 @@ void check_triangles(const Mesh& m) {
 // Every output corner is set exactly once (corner 0 and 1 of T(s) for the edge leaving s, corner 2 of T(r)
 // for the edge leaving prev(r)), so one pass over the edges builds the whole connectivity.
 Mesh sqrt3(const Mesh& input, Origins* origins) {
-  check_triangles(input);  // on the input, so that errors name its own handles, not compacted ones
+  // On the input, so that errors name its own handles, not compacted ones.
+  detail::require_triangles(input, "sqrt3", "sqrt(3) subdivision", detail::TriangleHoles::refused);
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
   const auto [nv, ne, nf, nc] = dense_counts(m);                // nc = 3 nf
