@@ -732,6 +732,13 @@ TEST_CASE("meng-prautzsch: bad input and bad parameters get their errors") {
     CHECK_THROWS_WITH_AS(mp_pushing(cube, p_params(0.5, ratio)), doctest::Contains("parameter ratio"),
                          InvalidArgument);
   }
+  // A rejected value is shown as it is, not rounded to an allowed one.
+  CHECK_THROWS_WITH_AS(mp_honeycomb(cube, h_params(1.000000001)),
+                       "mp-honeycomb: parameter tau must be in (0, 1), not 1.000000001", InvalidArgument);
+  MpPushingParams off_centre;
+  off_centre.center = glm::dvec3(0.1, 0, 5);
+  CHECK_THROWS_WITH_AS(mp_pushing(cube, off_centre), doctest::Contains("the centre (0.1, 0, 5) is not"),
+                       InvalidArgument);
   MpHoneycombParams eps;
   eps.random.enabled = true;
   eps.random.epsilon = 0.6;

@@ -1,6 +1,5 @@
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
 
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -8,21 +7,16 @@
 #include <vector>
 
 #include <dlfl/errors.h>
+#include <dlfl/format.h>
 #include <dlfl/schemes/detail/honeycomb_remesh.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
 
-std::string number(double x) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, result.ptr);
-}
-
 void check_unit(const char* name, double x) {
   if (!(x >= 0.0 && x <= 1.0)) {
-    throw InvalidArgument(std::string("honeycomb-zw: parameter ") + name + " = " + number(x) +
+    throw InvalidArgument(std::string("honeycomb-zw: parameter ") + name + " = " + format_number(x) +
                           " is outside [0, 1]");
   }
 }
