@@ -107,8 +107,7 @@ void check_zhang_wang_params(const ZhangWangParams& p) {
   check_unit("alpha", p.alpha);
 }
 
-Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombOrigin* origin,
-                          Origins* origins) {
+Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, Origins* origins) {
   check_zhang_wang_params(p);
 
   // The CCV of every input face: its control point, or its centroid.
@@ -158,10 +157,6 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombO
         (p.alpha * neighbour_sum[v.index()] + (1.0 - p.alpha) * ccv_sum[v.index()]) / double(n);
     const FaceId around = out.face_of_vertex[v.index()];
     result_points[around] = check_finite((1.0 - p.c) * mesh.position(v) + p.c * average, around);
-  }
-  if (origin) {
-    origin->face_of_face = std::move(out.face_of_face);
-    origin->face_of_vertex = std::move(out.face_of_vertex);
   }
   return std::move(out.mesh);
 }
@@ -224,7 +219,7 @@ SchemeSpec zhang_wang_honeycomb_scheme() {
         z.b = p.number("b");
         z.c = p.number("c");
         z.alpha = p.number("alpha");
-        return zhang_wang_honeycomb(m, z, nullptr, origins);
+        return zhang_wang_honeycomb(m, z, origins);
       }};
 }
 
