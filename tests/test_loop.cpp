@@ -9,6 +9,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/schemes/loop.h>
+#include "test_helpers.h"
 #include "triangle_meshes.h"
 
 using namespace dlfl;
@@ -160,7 +161,7 @@ TEST_CASE("loop: non-triangles, larger holes and point spheres are refused, nami
   const CornerId c = m.first_corner(survivor);
   m.insert_edge(m.next(c), m.prev(c));
   m.delete_edge(shared_edge(FaceId(4), FaceId(5)));
-  REQUIRE(validate(m).valid());
+  require_valid(m);
   FaceId quad;
   for (FaceId f : m.faces())
     if (m.size(f) == 4) quad = f;

@@ -113,8 +113,7 @@ TEST_CASE("mp tool: an mhp log records the pattern and replays to the same mesh"
               " -s mhp --param 'pattern=(PH)2' --param tau_h=0.3 -o '" + out.string() + "' --log '" +
               log.string() + "' --self-contained");
   REQUIRE(r.exit_code == 0);
-  std::ifstream in(log);
-  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  const std::string text = read_text(log);
   CHECK(text.find("(PH)2") != std::string::npos);
   CHECK(text.find("tau_p") != std::string::npos);  // defaults are recorded too
   const auto replayed = scratch("replayed.json");

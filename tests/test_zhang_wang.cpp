@@ -13,19 +13,21 @@
 
 #include <dlfl/create_face_manifold.h>
 #include <dlfl/errors.h>
-#include <dlfl/mesh_hash.h>
-#include <dlfl/statistics.h>
-#include <dlfl/validate.h>
 #include <dlfl/history/editor.h>
-#include <dlfl/io/json_mesh.h>
 #include <dlfl/history/oplog.h>
-#include "scheme_meshes.h"
+#include <dlfl/io/json_mesh.h>
+#include <dlfl/mesh_hash.h>
 #include <dlfl/schemes/scheme_registry.h>
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
+#include <dlfl/statistics.h>
+#include <dlfl/validate.h>
 #include "log_helpers.h"
+#include "scheme_meshes.h"
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
@@ -60,7 +62,7 @@ Mesh checked_step(const Mesh& m, const ZhangWangParams& p = {}) {
   const Mesh copy = m;
   Mesh r = zhang_wang_honeycomb(m, p);
   CHECK(m == copy);
-  REQUIRE(validate(r).valid());
+  require_valid(r);
   const std::size_t V = m.num_vertices(), E = m.num_edges(), F = m.num_faces();
   CHECK(r.num_vertices() == 2 * E);
   CHECK(r.num_edges() == 3 * E);
@@ -405,14 +407,14 @@ TEST_CASE("zhang-wang: affine maps commute with the subdivision") {
 TEST_CASE("zhang-wang: hole faces stay holes and point spheres are copied") {
   Mesh grid = build_mesh(test::grid_soup(3, 2));
   const Mesh r = zhang_wang_honeycomb(grid);
-  REQUIRE(validate(r).valid());
+  require_valid(r);
   std::size_t holes = 0;
   for (FaceId f : r.faces()) holes += r.is_hole(f);
   CHECK(holes == 1);
   Mesh with_point = test::cube();
   with_point.create_vertex({5, 5, 5});
   const Mesh rp = zhang_wang_honeycomb(with_point);
-  REQUIRE(validate(rp).valid());
+  require_valid(rp);
   CHECK(statistics(rp).point_spheres == 1);
 }
 
