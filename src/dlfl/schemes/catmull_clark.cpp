@@ -64,11 +64,10 @@ Mesh catmull_clark(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec catmull_clark_scheme() {
-  return {"catmull-clark",
-          "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return catmull_clark(m, origins); }};
+  return parameterless_scheme(
+      "catmull-clark",
+      "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh",
+      catmull_clark);
 }
 
 }  // namespace detail

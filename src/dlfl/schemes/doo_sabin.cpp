@@ -201,11 +201,10 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec doo_sabin_scheme() {
-  return {"doo-sabin",
-          "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return doo_sabin(m, origins); }};
+  return parameterless_scheme(
+      "doo-sabin",
+      "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent",
+      doo_sabin);
 }
 
 }  // namespace detail

@@ -98,11 +98,10 @@ Mesh detail::dual(const Mesh& input, Origins* origins, std::vector<Origin>* corn
 namespace detail {
 
 SchemeSpec dual_scheme() {
-  return {"dual",
-          "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return dlfl::dual(m, origins); }};
+  return parameterless_scheme(
+      "dual",
+      "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge",
+      dlfl::dual);
 }
 
 }  // namespace detail

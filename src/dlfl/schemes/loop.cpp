@@ -157,11 +157,7 @@ Mesh loop(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec loop_scheme() {
-  return {"loop",
-          "Loop: every triangle into four, on triangle meshes",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return loop(m, origins); }};
+  return parameterless_scheme("loop", "Loop: every triangle into four, on triangle meshes", loop);
 }
 
 }  // namespace detail

@@ -180,11 +180,10 @@ Mesh mlca(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec mlca_scheme() {
-  return {"mlca",
-          "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return mlca(m, origins); }};
+  return parameterless_scheme(
+      "mlca",
+      "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed",
+      mlca);
 }
 
 }  // namespace detail

@@ -127,11 +127,9 @@ Mesh sqrt3(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec sqrt3_scheme() {
-  return {"sqrt3",
-          "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return sqrt3(m, origins); }};
+  return parameterless_scheme(
+      "sqrt3",
+      "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes", sqrt3);
 }
 
 }  // namespace detail
