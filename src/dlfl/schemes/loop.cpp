@@ -1,6 +1,5 @@
 #include <dlfl/schemes/loop.h>
 
-#include <array>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -11,18 +10,9 @@
 #include <dlfl/schemes/detail/require_triangles.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
+#include <dlfl/schemes/detail/valence_weights.h>
 
 namespace dlfl {
-
-namespace {
-
-// Loop's vertex weight for valence n.
-double loop_beta(std::uint32_t n) {
-  const double c = 3.0 / 8.0 + std::cos(2.0 * std::numbers::pi / n) / 4.0;
-  return (5.0 / 8.0 - c * c) / n;
-}
-
-}  // namespace
 
 // Connectivity, in closed form from the input's navigation.
 //
@@ -115,12 +105,14 @@ Mesh loop(const Mesh& input, Origins* origins) {
     out.set_corner(3 * n0 + 2, edge_base + e, 3 * s1.index() + 0);
   }
 
-  // Vertex points, with beta from a small table for the usual valences.
-  std::array<double, 32> beta_table{};
-  for (std::uint32_t n = 1; n < beta_table.size(); ++n) beta_table[n] = loop_beta(n);
+  // Vertex points, with Loop's weight beta for valence n.
+  const detail::ValenceWeights beta_of([](std::uint32_t n) {
+    const double c = 3.0 / 8.0 + std::cos(2.0 * std::numbers::pi / n) / 4.0;
+    return (5.0 / 8.0 - c * c) / n;
+  });
   for (std::uint32_t v = 0; v < nv; ++v) {
     const std::uint32_t n = valence[v];  // >= 2: no point spheres, no self-loops
-    const double beta = n < beta_table.size() ? beta_table[n] : loop_beta(n);
+    const double beta = beta_of(n);
     out.set_position(v, (1.0 - n * beta) * m.position(VertexId(v)) + beta * sum[v]);
   }
   Mesh result = out.finish();

@@ -1,6 +1,5 @@
 #include <dlfl/schemes/sqrt3.h>
 
-#include <array>
 #include <cmath>
 #include <numbers>
 #include <optional>
@@ -11,15 +10,9 @@
 #include <dlfl/schemes/detail/require_triangles.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
+#include <dlfl/schemes/detail/valence_weights.h>
 
 namespace dlfl {
-
-namespace {
-
-// Kobbelt's vertex weight a_n for valence n.
-double sqrt3_alpha(std::uint32_t n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; }
-
-}  // namespace
 
 // Connectivity, in closed form from the input's navigation.
 //
@@ -92,12 +85,12 @@ Mesh sqrt3(const Mesh& input, Origins* origins) {
     out.set_corner(3 * k1 + 1, f0, 3 * k0 + 1);
   }
 
-  // Vertex points, with a_n from a small table for the usual valences.
-  std::array<double, 32> weight_table{};
-  for (std::uint32_t n = 1; n < weight_table.size(); ++n) weight_table[n] = sqrt3_alpha(n);
+  // Vertex points, with Kobbelt's weight a_n for valence n.
+  const detail::ValenceWeights alpha_of(
+      [](std::uint32_t n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; });
   for (std::uint32_t v = 0; v < nv; ++v) {
     const std::uint32_t n = valence[v];  // >= 2: no point spheres, no self-loops
-    const double alpha = n < weight_table.size() ? weight_table[n] : sqrt3_alpha(n);
+    const double alpha = alpha_of(n);
     out.set_position(v, (1.0 - alpha) * m.position(VertexId(v)) + (alpha / n) * sum[v]);
   }
   Mesh result = out.finish();
