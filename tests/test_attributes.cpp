@@ -19,9 +19,11 @@
 #include <dlfl/mesh_hash.h>
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
 #include <dlfl/validate.h>
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
@@ -245,7 +247,7 @@ TEST_CASE("attributes: survive random operators and their exact undo, removed va
     fill_new(v0, e0, f0, c0);
     if (inverses.size() % 500 == 0) checkpoints.emplace_back(inverses.size(), m);
   }
-  REQUIRE(validate(m).valid());
+  require_valid(m);
   CHECK(removed_with_value > 3000);  // many steps removed elements that carried values
 
   const Mesh end = m;

@@ -7,12 +7,14 @@
 #include <glm/mat3x3.hpp>
 
 #include <dlfl/errors.h>
+#include <dlfl/schemes/catmull_clark.h>
 #include <dlfl/validate.h>
 #include "scheme_meshes.h"
-#include <dlfl/schemes/catmull_clark.h>
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
@@ -101,7 +103,7 @@ TEST_CASE("catmull-clark: point spheres are refused and tombstones do not matter
 TEST_CASE("catmull-clark: hole faces are subdivided and their quads stay holes") {
   const Mesh in = build_mesh(test::grid_soup(3, 2));  // 6 quads and one hole of 10 corners
   const Mesh out = catmull_clark(in);
-  REQUIRE(validate(out).valid());
+  require_valid(out);
   std::size_t holes = 0;
   for (FaceId f : out.faces()) holes += out.is_hole(f);
   CHECK(holes == 10);

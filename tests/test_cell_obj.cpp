@@ -76,7 +76,7 @@ TEST_CASE("cell obj: round trips keep every cell and every position bit") {
   test::ScratchDir dir;
   write_cell_complex(c, dir / "rt.obj");
   test::check_identical(read_cell_complex(dir / "rt.obj"), c);
-  CHECK(dir.count() == 1);
+  CHECK(dir.entries().size() == 1);
 }
 
 TEST_CASE("cell obj: bad input is an IoError at its line, and nothing is written") {
@@ -104,7 +104,7 @@ TEST_CASE("cell obj: bad input is an IoError at its line, and nothing is written
   CHECK_THROWS_WITH_AS(write_cell_complex(hex, dir / "out.obj"), doctest::Contains("hexahedron"), IoError);
   std::ostringstream sink;
   CHECK_THROWS_AS(write_cell_obj(sink, hex), IoError);
-  CHECK(dir.count() == 1);
+  CHECK(dir.entries().size() == 1);
 }
 
 TEST_CASE("cell obj: which files are cell complexes") {

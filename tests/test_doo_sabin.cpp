@@ -9,6 +9,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/schemes/doo_sabin.h>
+#include "test_helpers.h"
 #include "triangle_meshes.h"
 
 using namespace dlfl;
@@ -138,7 +139,7 @@ TEST_CASE("doo-sabin: a face of 70 sides (closed form) agrees with the weights s
   test::add_prism_faces(s, n);
   const Mesh in = build_mesh(s);
   const Mesh out = doo_sabin(in);
-  REQUIRE(validate(out).valid());
+  require_valid(out);
   for (FaceId f : in.faces()) {
     std::size_t i = 0;
     for (CornerId c : in.corners(f))
@@ -183,7 +184,7 @@ TEST_CASE("doo-sabin: point spheres and valence-1 vertices are refused, naming t
 
   // Join the point sphere to a cube corner: v9 now has one edge, with the same face on both sides.
   m.insert_edge(m.corner(VertexId(0)), m.corner(sphere));
-  REQUIRE(validate(m).valid());
+  require_valid(m);
   REQUIRE(m.valence(sphere) == 1);
   const std::string valence1 = error_message<TopologyError>([&] { doo_sabin(m); });
   CHECK(valence1.find("doo-sabin: v9 has valence 1") != std::string::npos);

@@ -5,6 +5,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/schemes/dual.h>
+#include "test_helpers.h"
 #include "triangle_meshes.h"
 
 using namespace dlfl;
@@ -54,7 +55,7 @@ TEST_CASE("dual: the dual of the dual has the input's connectivity, and the cube
   for (const PolygonSoup& soup : closed_polygon_soups()) {
     const Mesh in = build_mesh(soup);
     const Mesh twice = dual(dual(in));
-    REQUIRE(validate(twice).valid());
+    require_valid(twice);
     // Vertex v of the result stands for face v of the dual, which stands for vertex v of the input; face f
     // likewise for face f. Each face is the same cycle of vertices, perhaps from another first corner.
     REQUIRE(twice.num_faces() == in.num_faces());
@@ -77,10 +78,10 @@ TEST_CASE("dual: a valence-2 vertex gives a 2-gon and a 2-gon gives a valence-2 
   const VertexId mid = m.subdivide_edge(EdgeId(0), {0.0, -1.0, -1.0});
   REQUIRE(m.valence(mid) == 2);
   const Mesh d = dual(m);
-  REQUIRE(validate(d).valid());
+  require_valid(d);
   CHECK(d.size(FaceId(mid.index())) == 2);
   const Mesh back = dual(d);
-  REQUIRE(validate(back).valid());
+  require_valid(back);
   CHECK(back.valence(mid) == 2);
 }
 

@@ -42,7 +42,7 @@ TEST_CASE("tool ops: lists every registered operation, as text and as JSON") {
   for (const auto& p : sub["params"]) {
     if (p["name"] != "iterations") continue;
     found = true;
-    CHECK(p["default"] == "1");
+    CHECK(p["default"] == 1);  // typed, as in `dlfl schemes --json`
     CHECK(p["range"]["min"] == 0.0);
     CHECK(p["range"]["max"] == 64.0);
   }

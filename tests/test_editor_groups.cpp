@@ -5,7 +5,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include <dlfl/history/editor.h>
 #include <dlfl/history/oplog.h>
@@ -13,6 +12,7 @@
 #include <dlfl/mesh_hash.h>
 #include <dlfl/validate.h>
 #include "log_helpers.h"
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
@@ -25,13 +25,6 @@ void three_edits(Editor& ed) {
   const InsertEdgeResult r = ed.insert_edge(c, ed.mesh().next(ed.mesh().next(c)));
   const VertexId v = ed.subdivide_edge(r.edge, glm::dvec3(0.5, 0.25, -1));
   ed.set_position(v, glm::dvec3(0.5, 0.25, -1.5));
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 }  // namespace
@@ -157,7 +150,7 @@ TEST_CASE("oplog: logs written before the operation registry replay to the hash 
   for (const char* name : {"v1_euler_honeycomb", "v1_zhang_wang", "v1_meng_prautzsch", "v1_triangles"}) {
     CAPTURE(name);
     const Editor ed = replay_log_file(dir / (std::string(name) + ".json"));
-    std::string expected = read_text(dir / (std::string(name) + ".hash"));
+    std::string expected = test::read_text(dir / (std::string(name) + ".hash"));
     while (!expected.empty() && expected.back() == '\n') expected.pop_back();
     CHECK(mesh_hash(ed.mesh()) == expected);
     CHECK(validate(ed.mesh()).valid());

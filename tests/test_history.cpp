@@ -1,32 +1,26 @@
 // Editor history (exact undo/redo of operators and schemes), the native JSON format, and operation logs.
 
 #include <doctest/doctest.h>
-#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <random>
 
-#include <dlfl/mesh_hash.h>
-#include <dlfl/validate.h>
 #include <dlfl/history/editor.h>
-#include <dlfl/schemes/scheme_registry.h>
+#include <dlfl/history/oplog.h>
 #include <dlfl/io/json_mesh.h>
 #include <dlfl/io/mesh_io.h>
-#include <dlfl/history/oplog.h>
+#include <dlfl/mesh_hash.h>
+#include <dlfl/schemes/scheme_registry.h>
+#include <dlfl/validate.h>
 #include "log_helpers.h"
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
-
-std::filesystem::path scratch_dir() {
-  // One directory per process: CTest runs test cases in parallel processes.
-  auto dir = std::filesystem::temp_directory_path() / ("dlfl_history_test_" + std::to_string(getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
-}
 
 // The error a log gets, with its op index and field.
 LogError log_error(const nlohmann::json& log) {
@@ -185,7 +179,7 @@ TEST_CASE("history: a long random session of operators and schemes and undo and 
       if (a.valid() && m.is_point_sphere(m.vertex(a))) ed.delete_vertex(m.vertex(a));
     }
   }
-  REQUIRE(validate(ed.mesh()).valid());
+  require_valid(ed.mesh());
   CHECK(schemes >= 3);
   CHECK(undos > 100);
   CHECK(redos > 20);
@@ -197,8 +191,7 @@ TEST_CASE("history: a long random session of operators and schemes and undo and 
 }
 
 TEST_CASE("history: a self-contained log replays without the input file") {
-  const auto dir = scratch_dir();
-  const auto input = dir / "input.obj";
+  const auto input = test::scratch("input.obj");
   write_mesh(build_mesh(test::grid_soup(2, 2)), input);
   Editor ed(Editor::Options{true, 0});
   ed.set_mesh(read_mesh(input), input);
@@ -283,7 +276,7 @@ TEST_CASE("history: every malformed log gets an error naming the op and the fiel
   }
   {
     // Bad JSON in a file: an IoError, and the tool writes nothing (see the tool tests).
-    const auto path = scratch_dir() / "garbage.json";
+    const auto path = test::scratch("garbage.json");
     std::ofstream(path) << "{\"format\": \"dlfl-oplog\", \"ops\": [";
     CHECK_THROWS_AS(replay_log_file(path), IoError);
   }
@@ -296,7 +289,7 @@ TEST_CASE("history: the native JSON format saves and reloads a mesh exactly") {
   m.delete_edge(EdgeId(4));     // a tombstone
   m.set_hole(*m.faces().begin(), true);
   m.set_position(VertexId(3), {0.1, -0.0, 1e-300});
-  const auto path = scratch_dir() / "mesh.json";
+  const auto path = test::scratch("mesh.json");
   write_mesh(m, path);
   Mesh back = read_mesh(path);
   CHECK(back == m);

@@ -16,25 +16,19 @@
 
 #include <dlfl/create_face_manifold.h>
 #include <dlfl/errors.h>
+#include <dlfl/schemes/honeycomb.h>
 #include <dlfl/statistics.h>
 #include <dlfl/validate.h>
 #include "scheme_meshes.h"
-#include <dlfl/schemes/honeycomb.h>
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
 using Histogram = std::map<std::uint32_t, std::size_t>;
-
-void require_valid(const Mesh& m) {
-  auto r = validate(m);
-  if (!r.valid()) {
-    for (auto& v : r.violations) MESSAGE(to_string(v.code) << " " << v.element << ": " << v.message);
-  }
-  REQUIRE(r.valid());
-}
 
 // (Euler characteristic, genus, holes) of every component, sorted: component order may change.
 std::vector<std::tuple<long, long, std::size_t>> topology(const Mesh& m) {

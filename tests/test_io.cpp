@@ -11,7 +11,6 @@
 #include <fstream>
 #include <limits>
 #include <optional>
-#include <random>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -20,54 +19,21 @@
 #include <dlfl/build_mesh.h>
 #include <dlfl/create_face_manifold.h>
 #include <dlfl/errors.h>
-#include <dlfl/mesh.h>
 #include <dlfl/io/atomic_file.h>
 #include <dlfl/io/mesh_io.h>
 #include <dlfl/io/obj.h>
 #include <dlfl/io/off.h>
 #include <dlfl/io/ply.h>
+#include <dlfl/mesh.h>
+#include "test_helpers.h"
 
 namespace fs = std::filesystem;
 using namespace dlfl;
+using test::read_text;
+using test::ScratchDir;
+using test::write_text;
 
 namespace {
-
-// A fresh folder under the system temp folder, removed with everything in it at the end of the test.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    static std::mt19937_64 random{std::random_device{}()};
-    path = fs::temp_directory_path() / ("dlfl_test_io_" + std::to_string(random()));
-    fs::create_directories(path);
-  }
-  ~TempDir() {
-    std::error_code ec;
-    fs::remove_all(path, ec);
-  }
-  TempDir(const TempDir&) = delete;
-  TempDir& operator=(const TempDir&) = delete;
-  fs::path operator/(const std::string& name) const { return path / name; }
-  // Names of everything in the folder, sorted: shows leftover temporary files.
-  std::vector<std::string> entries() const {
-    std::vector<std::string> names;
-    for (const auto& entry : fs::directory_iterator(path)) names.push_back(entry.path().filename().string());
-    std::sort(names.begin(), names.end());
-    return names;
-  }
-};
-
-void write_file(const fs::path& path, const std::string& content) {
-  std::ofstream out(path, std::ios::binary);
-  out << content;
-  REQUIRE(out.good());
-}
-
-std::string read_file(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream content;
-  content << in.rdbuf();
-  return content.str();
-}
 
 // Doubles that a sloppy writer would not read back exactly.
 const double third = 1.0 / 3.0;
@@ -233,7 +199,7 @@ TEST_CASE("io: round trip through every format keeps counts and faces and exact 
       CAPTURE(c.name);
       CAPTURE(t.file);
       CAPTURE(t.binary_ply);
-      TempDir dir;
+      ScratchDir dir;
       write_mesh(original, dir / t.file, {t.binary_ply});
       CHECK(dir.entries() == std::vector<std::string>{t.file});
       const Mesh back = read_mesh(dir / t.file);
@@ -253,7 +219,7 @@ TEST_CASE("io: round trip through every format keeps counts and faces and exact 
 }
 
 TEST_CASE("io: the awkward doubles survive with the sign of zero") {
-  TempDir dir;
+  ScratchDir dir;
   const Mesh cube = build_mesh(cube_soup());
   write_mesh(cube, dir / "c.obj");
   const Mesh back = read_mesh(dir / "c.obj");
@@ -275,22 +241,22 @@ TEST_CASE("io: writers produce the expected text and bytes") {
   tetra.add_face({0, 1, 3});
   tetra.add_face({0, 3, 2});
   tetra.add_face({1, 2, 3});
-  TempDir dir;
+  ScratchDir dir;
   const Mesh m = build_mesh(tetra);
 
   SUBCASE("obj: 1-based indices, shortest decimals") {
     write_mesh(m, dir / "t.obj");
-    CHECK(read_file(dir / "t.obj") ==
+    CHECK(read_text(dir / "t.obj") ==
           "v 0.1 -0 1e-300\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n");
   }
   SUBCASE("off") {
     write_mesh(m, dir / "t.off");
-    CHECK(read_file(dir / "t.off") ==
+    CHECK(read_text(dir / "t.off") ==
           "OFF\n4 4 0\n0.1 -0 1e-300\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   }
   SUBCASE("ply ascii") {
     write_mesh(m, dir / "t.ply", {.binary_ply = false});
-    CHECK(read_file(dir / "t.ply") ==
+    CHECK(read_text(dir / "t.ply") ==
           "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
           "element face 4\nproperty list uchar uint vertex_indices\nend_header\n"
           "0.1 -0 1e-300\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
@@ -306,7 +272,7 @@ TEST_CASE("io: writers produce the expected text and bytes") {
       expected.put(std::uint8_t{3});
       for (std::uint32_t i : tetra.face(f)) expected.put(i);
     }
-    CHECK(read_file(dir / "t.ply") == expected.data);
+    CHECK(read_text(dir / "t.ply") == expected.data);
   }
 }
 
@@ -320,11 +286,11 @@ TEST_CASE("io: a face of more than 255 vertices gets a uint count in PLY") {
   }
   disc.add_face(face);
   const Mesh m = build_mesh(disc);
-  TempDir dir;
+  ScratchDir dir;
   for (bool binary : {true, false}) {
     CAPTURE(binary);
     write_mesh(m, dir / "disc.ply", {binary});
-    const std::string content = read_file(dir / "disc.ply");
+    const std::string content = read_text(dir / "disc.ply");
     CHECK(content.find("property list uint uint vertex_indices\n") != std::string::npos);
     CHECK(content.substr(0, content.find("end_header")).find("uchar") == std::string::npos);
     const Mesh back = read_mesh(dir / "disc.ply");
@@ -569,8 +535,8 @@ TEST_CASE("io: format by extension") {
   CHECK_THROWS_AS(format_for_path("mesh"), IoError);
   CHECK_THROWS_AS(format_for_path("obj"), IoError);
 
-  TempDir dir;
-  write_file(dir / "cube.stl", "solid\n");
+  ScratchDir dir;
+  write_text(dir / "cube.stl", "solid\n");
   CHECK_THROWS_WITH_AS(read_mesh(dir / "cube.stl"), doctest::Contains(".stl"), IoError);
   CHECK_THROWS_WITH_AS(write_mesh(build_mesh(cube_soup()), dir / "cube.dae"), doctest::Contains(".dae"),
                        IoError);
@@ -581,7 +547,7 @@ TEST_CASE("io: format by extension") {
 // ------------------------------------------------------------------------------------------------
 
 TEST_CASE("io: missing file") {
-  TempDir dir;
+  ScratchDir dir;
   const fs::path path = dir / "missing.obj";
   try {
     read_mesh(path);
@@ -593,10 +559,10 @@ TEST_CASE("io: missing file") {
 }
 
 TEST_CASE("io: read_mesh reports the file and line of a topology error") {
-  TempDir dir;
+  ScratchDir dir;
   const fs::path path = dir / "bowtie.obj";
   // Two triangles sharing only vertex 1: a non-manifold vertex defined on line 2.
-  write_file(path, "# bow tie\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
+  write_text(path, "# bow tie\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n");
   try {
     read_mesh(path);
     FAIL("no exception");
@@ -700,7 +666,7 @@ TEST_CASE("io: a mesh that cannot be written leaves no file behind") {
   create_face_manifold(two_gon, points);
   REQUIRE(two_gon.num_faces() == 2);
 
-  TempDir dir;
+  ScratchDir dir;
   SUBCASE("no file before") {
     for (const char* name : {"two.obj", "two.off", "two.ply"}) {
       CHECK_THROWS_AS(write_mesh(two_gon, dir / name), TopologyError);
@@ -708,15 +674,15 @@ TEST_CASE("io: a mesh that cannot be written leaves no file behind") {
     CHECK(dir.entries().empty());
   }
   SUBCASE("an existing file keeps its content") {
-    write_file(dir / "keep.obj", "old content\n");
+    write_text(dir / "keep.obj", "old content\n");
     CHECK_THROWS_AS(write_mesh(two_gon, dir / "keep.obj"), TopologyError);
-    CHECK(read_file(dir / "keep.obj") == "old content\n");
+    CHECK(read_text(dir / "keep.obj") == "old content\n");
     CHECK(dir.entries() == std::vector<std::string>{"keep.obj"});
   }
 }
 
 TEST_CASE("io: writing into a missing folder fails cleanly") {
-  TempDir dir;
+  ScratchDir dir;
   const fs::path path = dir / "no_such_folder" / "cube.ply";
   try {
     write_mesh(build_mesh(cube_soup()), path);
@@ -728,16 +694,16 @@ TEST_CASE("io: writing into a missing folder fails cleanly") {
 }
 
 TEST_CASE("io: write_atomically replaces the file only when the writer succeeds") {
-  TempDir dir;
+  ScratchDir dir;
   const fs::path path = dir / "data.txt";
-  write_file(path, "old");
+  write_text(path, "old");
 
   SUBCASE("success replaces the content") {
     write_atomically(path, [](std::ostream& out) { out << "new content"; });
-    CHECK(read_file(path) == "new content");
+    CHECK(read_text(path) == "new content");
     write_atomically(
         path, [](std::ostream& out) { out.write("\0\n\r\n", 4); }, true);
-    CHECK(read_file(path) == std::string("\0\n\r\n", 4));
+    CHECK(read_text(path) == std::string("\0\n\r\n", 4));
   }
   SUBCASE("the writer's exception propagates unchanged") {
     struct Boom {};
@@ -747,7 +713,7 @@ TEST_CASE("io: write_atomically replaces the file only when the writer succeeds"
                                        throw Boom{};
                                      }),
                     Boom);
-    CHECK(read_file(path) == "old");
+    CHECK(read_text(path) == "old");
   }
   SUBCASE("a stream error becomes an IoError") {
     CHECK_THROWS_WITH_AS(write_atomically(path,
@@ -756,7 +722,7 @@ TEST_CASE("io: write_atomically replaces the file only when the writer succeeds"
                                             out.setstate(std::ios::badbit);
                                           }),
                          doctest::Contains(path.string().c_str()), IoError);
-    CHECK(read_file(path) == "old");
+    CHECK(read_text(path) == "old");
   }
   SUBCASE("a directory in the way cannot be replaced") {
     fs::create_directory(dir / "folder");

@@ -14,23 +14,25 @@
 #include <string>
 #include <vector>
 
-#include "convex_meshes.h"
+#include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/analysis/polyhedron_angles.h>
 #include <dlfl/build_mesh.h>
 #include <dlfl/errors.h>
-#include <dlfl/validate.h>
-#include "scheme_meshes.h"
-#include <dlfl/analysis/convex_polyhedron.h>
-#include <dlfl/schemes/meng_prautzsch_mixed.h>
 #include <dlfl/schemes/meng_prautzsch_honeycomb.h>
+#include <dlfl/schemes/meng_prautzsch_mixed.h>
 #include <dlfl/schemes/meng_prautzsch_pushing.h>
-#include <dlfl/analysis/polyhedron_angles.h>
 #include <dlfl/schemes/scheme_registry.h>
+#include <dlfl/validate.h>
+#include "convex_meshes.h"
+#include "scheme_meshes.h"
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
 using test::angle;
 using test::hull_soup;
 using test::normal_of;
+using test::require_valid;
 
 namespace {
 
@@ -161,7 +163,7 @@ double max_face_angle(const Mesh& m) { return polyhedron_angles(m).face.max; }
 // faces, old vertices in place, convex; and with bisecting planes, f-face f at tau times the height of v_F.
 void check_honeycomb_step(const Mesh& in, const MpHoneycombParams& params, bool bisecting = true) {
   const Mesh out = mp_honeycomb(in, params);
-  REQUIRE(validate(out).valid());
+  require_valid(out);
   const std::size_t V = in.num_vertices(), E = in.num_edges(), F = in.num_faces();
   CHECK(out.num_vertices() == V + 2 * E);
   CHECK(out.num_edges() == 4 * E);
@@ -196,7 +198,7 @@ void check_honeycomb_step(const Mesh& in, const MpHoneycombParams& params, bool 
 // The claims for one P step: counts, valences, convex, old vertices moved straight towards the centre.
 void check_pushing_step(const Mesh& in, const MpPushingParams& params) {
   const Mesh out = mp_pushing(in, params);
-  REQUIRE(validate(out).valid());
+  require_valid(out);
   const std::size_t V = in.num_vertices(), E = in.num_edges(), F = in.num_faces();
   CHECK(out.num_vertices() == V + E);
   CHECK(out.num_edges() == 4 * E);
@@ -732,6 +734,13 @@ TEST_CASE("meng-prautzsch: bad input and bad parameters get their errors") {
     CHECK_THROWS_WITH_AS(mp_pushing(cube, p_params(0.5, ratio)), doctest::Contains("parameter ratio"),
                          InvalidArgument);
   }
+  // A rejected value is shown as it is, not rounded to an allowed one.
+  CHECK_THROWS_WITH_AS(mp_honeycomb(cube, h_params(1.000000001)),
+                       "mp-honeycomb: parameter tau must be in (0, 1), not 1.000000001", InvalidArgument);
+  MpPushingParams off_centre;
+  off_centre.center = glm::dvec3(0.1, 0, 5);
+  CHECK_THROWS_WITH_AS(mp_pushing(cube, off_centre), doctest::Contains("the centre (0.1, 0, 5) is not"),
+                       InvalidArgument);
   MpHoneycombParams eps;
   eps.random.enabled = true;
   eps.random.epsilon = 0.6;

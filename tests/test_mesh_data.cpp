@@ -10,9 +10,11 @@
 #include <dlfl/geometry.h>
 #include <dlfl/mesh_data.h>
 #include <dlfl/validate.h>
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
@@ -82,7 +84,7 @@ TEST_CASE("mesh data: grows as elements are added") {
 
 TEST_CASE("mesh data: values follow their elements through compact") {
   Mesh m = cube_with_tombstones();
-  REQUIRE(validate(m).valid());
+  require_valid(m);
   REQUIRE(m.vertex_capacity() > m.num_vertices());
   REQUIRE(m.edge_capacity() > m.num_edges());
   REQUIRE(m.face_capacity() > m.num_faces());

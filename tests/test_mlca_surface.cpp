@@ -14,14 +14,16 @@
 
 #include <dlfl/build_mesh.h>
 #include <dlfl/geometry.h>
-#include <dlfl/validate.h>
-#include "scheme_meshes.h"
 #include <dlfl/schemes/catmull_clark.h>
 #include <dlfl/schemes/mlca_polygons.h>
 #include <dlfl/schemes/scheme_registry.h>
+#include <dlfl/validate.h>
+#include "scheme_meshes.h"
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
@@ -180,7 +182,7 @@ TEST_CASE("mlca surface: counts, valid result and kept genus") {
   // Triangles: split into 3F quads (V1 = V + E + F, E1 = 2E + 3F), then one step.
   const Mesh tet = test::tetrahedron();
   const Mesh out = mlca(tet);
-  REQUIRE(validate(out).valid());
+  require_valid(out);
   const std::size_t v1 = 4 + 6 + 4, e1 = 2 * 6 + 3 * 4, f1 = 3 * 4;
   CHECK(out.num_faces() == 4 * f1);
   CHECK(out.num_vertices() == v1 + e1 + f1);
@@ -189,7 +191,7 @@ TEST_CASE("mlca surface: counts, valid result and kept genus") {
   // Mixed faces (3 to 7 sides).
   const Mesh mixed = test::mixed_polyhedron();
   const Mesh mixed_out = mlca(mixed);
-  REQUIRE(validate(mixed_out).valid());
+  require_valid(mixed_out);
   CHECK(mixed_out.num_faces() == 4 * mixed.num_corners());
 }
 
@@ -242,7 +244,7 @@ TEST_CASE("mlca surface: open boundaries are cubic B-spline crease curves") {
   grid.positions[id(2, 0)].z = 1.0;  // on the boundary, not a corner
   const Mesh m = build_mesh(grid);
   const Mesh out = mlca(m);
-  REQUIRE(validate(out).valid());
+  require_valid(out);
   CHECK(out.num_faces() == 4 * 16 + 16);  // the 16-gon hole is split too: 16 quads that stay holes
   // Boundary vertex: 3/4 itself, 1/8 of each boundary neighbour; the interior is not involved.
   CHECK(out.position(VertexId(id(2, 0))).z == doctest::Approx(0.75));
@@ -275,7 +277,7 @@ TEST_CASE("mlca surface: point spheres are 0-cells, kept in place") {
   const VertexId lone = m.create_vertex({5.0, 6.0, 7.0});
   REQUIRE(m.is_point_sphere(lone));
   const Mesh out = mlca(m);
-  REQUIRE(validate(out).valid());
+  require_valid(out);
   CHECK(out.num_vertices() == 8 + 12 + 6 + 1);
   const VertexId last(std::uint32_t(out.vertex_capacity() - 1));
   CHECK(out.is_point_sphere(last));
@@ -356,7 +358,7 @@ TEST_CASE("mlca surface: open triangle meshes and degenerate inputs give valid m
   }
   const Mesh open = build_mesh(tri);
   const Mesh out = mlca(open);
-  REQUIRE(validate(out).valid());
+  require_valid(out);
   std::size_t real = 0;
   for (FaceId f : out.faces()) real += out.is_hole(f) ? 0 : 1;
   CHECK(real == 12 * 12);  // 12 triangles -> 36 quads -> 144
@@ -371,7 +373,7 @@ TEST_CASE("mlca surface: open triangle meshes and degenerate inputs give valid m
   const VertexId a = segment.create_vertex({0, 0, 0}), b = segment.create_vertex({1, 0, 0});
   segment.insert_edge(segment.corner(a), segment.corner(b));
   const Mesh segment_out = mlca(segment);
-  REQUIRE(validate(segment_out).valid());
+  require_valid(segment_out);
   CHECK(segment_out.num_faces() == 4 * 2);
   // The empty mesh.
   CHECK(mlca(Mesh()).num_vertices() == 0);

@@ -113,8 +113,7 @@ TEST_CASE("mp tool: an mhp log records the pattern and replays to the same mesh"
               " -s mhp --param 'pattern=(PH)2' --param tau_h=0.3 -o '" + out.string() + "' --log '" +
               log.string() + "' --self-contained");
   REQUIRE(r.exit_code == 0);
-  std::ifstream in(log);
-  const std::string text((std::istreambuf_iterator<char>(in)), {});
+  const std::string text = read_text(log);
   CHECK(text.find("(PH)2") != std::string::npos);
   CHECK(text.find("tau_p") != std::string::npos);  // defaults are recorded too
   const auto replayed = scratch("replayed.json");
@@ -141,6 +140,11 @@ TEST_CASE("mp tool: bad input and parameters give one error line and write nothi
   check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-pushing --param tau=0" + o), "tau", 2);
   check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-pushing --param center=1,2" + o),
                        "center", 2);
+  // A rejected value is shown as given, not rounded to an allowed one.
+  const Run close_to_one =
+      run("subdivide " + example("cube.obj") + " -s mp-honeycomb --param tau=1.000000001" + o);
+  CHECK(close_to_one.exit_code == 2);
+  CHECK(close_to_one.err == "error: mp-honeycomb: parameter tau = 1.000000001 is outside (0, 1)\n");
   Run outside = run("subdivide " + example("cube.obj") + " -s mp-honeycomb --param center=0,0,5" + o);
   check_one_line_error(outside, "not strictly inside the plane of f");
   check_one_line_error(run("subdivide '" + dented_octahedron_obj().string() + "' -s mp-pushing" + o),

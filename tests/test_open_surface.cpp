@@ -7,13 +7,15 @@
 #include <filesystem>
 
 #include <dlfl/build_mesh.h>
-#include <dlfl/statistics.h>
-#include <dlfl/validate.h>
 #include <dlfl/io/mesh_io.h>
 #include <dlfl/schemes/catmull_clark.h>
 #include <dlfl/schemes/loop.h>
+#include <dlfl/statistics.h>
+#include <dlfl/validate.h>
+#include "test_helpers.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
@@ -52,7 +54,7 @@ struct Counts {
 };
 
 void check_surface(const Mesh& m, const Counts& expected) {
-  REQUIRE(validate(m).valid());
+  require_valid(m);
   const MeshStatistics s = statistics(m);
   CHECK(s.vertices == expected.vertices);
   CHECK(s.edges == expected.edges);
@@ -110,13 +112,10 @@ TEST_CASE("open surface: loop covers a triangular hole with 4 triangles and coun
 }
 
 TEST_CASE("open surface: a written catmull-clark step reads back without stray vertices") {
-  const auto dir = std::filesystem::temp_directory_path() / "dlfl_open_surface_test";
-  std::filesystem::create_directories(dir);
-  const auto path = dir / "cc.obj";
+  const auto path = test::scratch("cc.obj");
   write_mesh(catmull_clark(build_mesh(two_squares())), path);
   const MeshStatistics s = statistics(read_mesh(path));
   CHECK(s.vertices == 15);
   CHECK(s.point_spheres == 0);
   CHECK(s.holes == 1);
-  std::filesystem::remove_all(dir);
 }

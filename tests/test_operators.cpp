@@ -8,9 +8,11 @@
 #include <dlfl/create_face_manifold.h>
 #include <dlfl/errors.h>
 #include <dlfl/validate.h>
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
@@ -26,14 +28,6 @@ long genus_of_single_component(const Mesh& m) {
   REQUIRE(r.valid());
   REQUIRE(r.components.size() == 1);
   return r.components[0].genus;
-}
-
-void require_valid(const Mesh& m) {
-  auto r = validate(m);
-  if (!r.valid()) {
-    for (auto& v : r.violations) MESSAGE(to_string(v.code) << " " << v.element << ": " << v.message);
-  }
-  REQUIRE(r.valid());
 }
 
 // The corner of face f at vertex v (f must visit v once).

@@ -435,7 +435,7 @@ void check_honeycomb(const Mesh& in) {
   }
   // Zhang-Wang has the honeycomb's topology and handles, so the same origins.
   Origins zw;
-  const Mesh z = zhang_wang_honeycomb(in, {}, nullptr, &zw);
+  const Mesh z = zhang_wang_honeycomb(in, {}, &zw);
   CHECK(zw.vertices == o.vertices);
   CHECK(zw.edges == o.edges);
   CHECK(zw.faces == o.faces);
@@ -764,7 +764,7 @@ TEST_CASE("origins: honeycomb and honeycomb-zw") {
   check_honeycomb(with_tombstones(test::cube_soup()));
   check_tombstones_renamed(test::cube_soup(), [](const Mesh& m, Origins* o) { return honeycomb(m, {}, o); });
   check_tombstones_renamed(test::dodecahedron_soup(),
-                           [](const Mesh& m, Origins* o) { return zhang_wang_honeycomb(m, {}, nullptr, o); });
+                           [](const Mesh& m, Origins* o) { return zhang_wang_honeycomb(m, {}, o); });
   // The result's own tombstones have no origin, and a second step reads them fine.
   Origins first, second;
   const Mesh once = honeycomb(test::cube(), {}, &first);

@@ -6,9 +6,11 @@
 #include <vector>
 
 #include <dlfl/validate.h>
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
@@ -105,14 +107,6 @@ class RandomEditor {
   Mesh& m_;
   std::mt19937_64 rng_;
 };
-
-void require_valid(const Mesh& m) {
-  auto r = validate(m);
-  if (!r.valid()) {
-    for (auto& v : r.violations) MESSAGE(to_string(v.code) << " " << v.element << ": " << v.message);
-  }
-  REQUIRE(r.valid());
-}
 
 }  // namespace
 

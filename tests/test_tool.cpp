@@ -110,8 +110,7 @@ TEST_CASE("tool: every kind of bad input file gets one located error line and le
     // An existing output file is not touched either.
     std::ofstream(out) << "keep";
     CHECK(run("convert '" + in.string() + "' '" + out.string() + "'").exit_code == 1);
-    std::ifstream kept(out);
-    CHECK(std::string(std::istreambuf_iterator<char>(kept), {}) == "keep");
+    CHECK(read_text(out) == "keep");
   }
 }
 
@@ -175,9 +174,7 @@ TEST_CASE("tool: convert of a malformed input names the line and writes nothing"
   Run r = run("convert '" + bad.string() + "' '" + out.string() + "'");
   CHECK(r.exit_code == 1);
   CHECK(r.err.find(":8:") != std::string::npos);
-  std::ifstream in(out);
-  std::string content((std::istreambuf_iterator<char>(in)), {});
-  CHECK(content == "old content");  // the existing file is untouched
+  CHECK(read_text(out) == "old content");  // the existing file is untouched
 }
 
 TEST_CASE("tool: every registered scheme subdivides the tetrahedron into a valid mesh") {

@@ -5,6 +5,7 @@
 #include <algorithm>
 
 #include <dlfl/validate.h>
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 namespace dlfl {
@@ -19,6 +20,7 @@ struct MeshTestAccess {
 }  // namespace dlfl
 
 using namespace dlfl;
+using test::require_valid;
 using Access = MeshTestAccess;
 
 namespace {
@@ -117,7 +119,7 @@ TEST_CASE("validate: a pinched vertex is caught") {
   // Two tetrahedra; then the corners of the second one's vertex 4 are moved to vertex 0, which now has two
   // separate fans.
   Mesh m = build_mesh(join(test::tetrahedron_soup(), test::tetrahedron_soup(), {3, 0, 0}));
-  REQUIRE(validate(m).valid());
+  require_valid(m);
   auto& c = Access::corners(m);
   for (auto& rec : c) {
     if (rec.vertex == VertexId(4)) rec.vertex = VertexId(0);

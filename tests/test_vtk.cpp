@@ -154,7 +154,7 @@ TEST_CASE("vtk: ASCII and binary round trips keep every cell and every position 
     test::check_identical(read_cell_complex(dir / "c.vtk"), c);
     CHECK((test::read_text(dir / "c.vtk").find("BINARY\n") != std::string::npos) == binary);
   }
-  CHECK(dir.count() == 3);  // no temporary files left
+  CHECK(dir.entries().size() == 3);  // no temporary files left
 }
 
 TEST_CASE("vtk: binary data is big-endian") {
@@ -304,7 +304,7 @@ TEST_CASE("vtk: a failed read or write leaves no output file") {
     test::write_text(in, bad[i]);
     const auto out = outputs / "out.vtk";
     CHECK_THROWS_AS(write_cell_complex(read_cell_complex(in), out), IoError);
-    CHECK(outputs.count() == 0);
+    CHECK(outputs.entries().empty());
   }
   // Invalid complexes are refused before any file is touched, an existing file is left as it was.
   CellComplex c = awkward_complex();
@@ -314,13 +314,13 @@ TEST_CASE("vtk: a failed read or write leaves no output file") {
   c = awkward_complex();
   c.indices[4] = c.indices[3];  // a repeated vertex in the quad
   CHECK_THROWS_AS(write_cell_complex(c, outputs / "x.vtk"), InvalidArgument);
-  CHECK(outputs.count() == 0);
+  CHECK(outputs.entries().empty());
   test::write_text(outputs / "keep.vtk", "old");
   CHECK_THROWS_AS(write_cell_complex(c, outputs / "keep.vtk"), InvalidArgument);
   CHECK(test::read_text(outputs / "keep.vtk") == "old");
   CHECK_THROWS_AS(read_cell_complex(inputs / "missing.vtk"), IoError);
   CHECK_THROWS_AS(write_cell_complex(awkward_complex(), outputs / "x.stl"), IoError);
-  CHECK(outputs.count() == 1);
+  CHECK(outputs.entries().size() == 1);
 }
 
 TEST_CASE("vtk: binary version 5 files with float points and 64-bit offsets") {

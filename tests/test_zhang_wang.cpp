@@ -13,19 +13,21 @@
 
 #include <dlfl/create_face_manifold.h>
 #include <dlfl/errors.h>
-#include <dlfl/mesh_hash.h>
-#include <dlfl/statistics.h>
-#include <dlfl/validate.h>
 #include <dlfl/history/editor.h>
-#include <dlfl/io/json_mesh.h>
 #include <dlfl/history/oplog.h>
-#include "scheme_meshes.h"
+#include <dlfl/io/json_mesh.h>
+#include <dlfl/mesh_hash.h>
 #include <dlfl/schemes/scheme_registry.h>
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
+#include <dlfl/statistics.h>
+#include <dlfl/validate.h>
 #include "log_helpers.h"
+#include "scheme_meshes.h"
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 using namespace dlfl;
+using test::require_valid;
 
 namespace {
 
@@ -42,13 +44,25 @@ glm::dvec3 centroid(const Mesh& m, FaceId f) {
   return s / double(m.size(f));
 }
 
+// The face of a step's output that stems from `source`: each input face and vertex has exactly one.
+FaceId face_from(const Origins& origins, const Origin& source) {
+  FaceId found;
+  for (std::uint32_t f = 0; f < origins.faces.size(); ++f) {
+    if (origins.faces[f] != source) continue;
+    REQUIRE_FALSE(found.valid());
+    found = FaceId(f);
+  }
+  REQUIRE(found.valid());
+  return found;
+}
+
 // One step checked against the honeycomb's closed forms: V' = 2E, E' = 3E, F' = F + V, 3-valent, face sizes
 // (a copy of every face, twice the valence around every vertex), topology kept, every face with a CCV.
 Mesh checked_step(const Mesh& m, const ZhangWangParams& p = {}) {
   const Mesh copy = m;
   Mesh r = zhang_wang_honeycomb(m, p);
   CHECK(m == copy);
-  REQUIRE(validate(r).valid());
+  require_valid(r);
   const std::size_t V = m.num_vertices(), E = m.num_edges(), F = m.num_faces();
   CHECK(r.num_vertices() == 2 * E);
   CHECK(r.num_edges() == 3 * E);
@@ -81,9 +95,9 @@ std::vector<glm::dvec3> step_face(const std::vector<glm::dvec3>& points, const g
                                   const ZhangWangParams& p) {
   FaceId front;
   const Mesh m = face_manifold(points, q, &front);
-  HoneycombOrigin origin;
-  const Mesh r = zhang_wang_honeycomb(m, p, &origin);
-  const FaceId copy = origin.face_of_face[front.index()];
+  Origins origins;
+  const Mesh r = zhang_wang_honeycomb(m, p, &origins);
+  const FaceId copy = face_from(origins, origin_of(front));
   std::vector<glm::dvec3> out{*face_point(r, copy)};
   for (CornerId c : r.corners(copy)) out.push_back(r.position(r.vertex(c)));
   return out;
@@ -190,9 +204,9 @@ TEST_CASE("zhang-wang: a raised control point pulls its face as formulas (2) and
     if (close(centroid(m, f), {0, 0, 1})) top = f;
   REQUIRE(top.valid());
   set_face_point(m, top, glm::dvec3(0, 0, 2));
-  HoneycombOrigin origin;
-  const Mesh r = zhang_wang_honeycomb(m, {}, &origin);
-  const FaceId copy = origin.face_of_face[top.index()];
+  Origins origins;
+  const Mesh r = zhang_wang_honeycomb(m, {}, &origins);
+  const FaceId copy = face_from(origins, origin_of(top));
   CHECK(close(*face_point(r, copy), {0, 0, 14.0 / 9}));
   int raised = 0;
   for (CornerId c : r.corners(copy)) {
@@ -205,7 +219,7 @@ TEST_CASE("zhang-wang: a raised control point pulls its face as formulas (2) and
   // face's CCV is (1, 1, 1)/2 + ((1, 1, 1) + (1, 1, 2))/12 = (2/3, 2/3, 3/4).
   for (VertexId v : m.vertices()) {
     if (!close(m.position(v), {1, 1, 1})) continue;
-    CHECK(close(*face_point(r, origin.face_of_vertex[v.index()]), {2.0 / 3, 2.0 / 3, 0.75}));
+    CHECK(close(*face_point(r, face_from(origins, origin_of(v))), {2.0 / 3, 2.0 / 3, 0.75}));
   }
 }
 
@@ -220,11 +234,11 @@ TEST_CASE("zhang-wang: alpha splits formula (4) between the neighbours and the f
            {1.0, {2.0 / 3, 2.0 / 3, 2.0 / 3}}, {0.0, {2.0 / 3, 2.0 / 3, 5.0 / 6}}}) {
     ZhangWangParams p;
     p.alpha = alpha;
-    HoneycombOrigin origin;
-    const Mesh r = zhang_wang_honeycomb(m, p, &origin);
+    Origins origins;
+    const Mesh r = zhang_wang_honeycomb(m, p, &origins);
     for (VertexId v : m.vertices())
       if (close(m.position(v), {1, 1, 1}))
-        CHECK(close(*face_point(r, origin.face_of_vertex[v.index()]), expected));
+        CHECK(close(*face_point(r, face_from(origins, origin_of(v))), expected));
   }
 }
 
@@ -232,9 +246,9 @@ TEST_CASE("zhang-wang: c = 0 keeps the vertex faces' CCVs on the old vertices") 
   ZhangWangParams p;
   p.c = 0;
   const Mesh m = test::dodecahedron();
-  HoneycombOrigin origin;
-  const Mesh r = zhang_wang_honeycomb(m, p, &origin);
-  for (VertexId v : m.vertices()) CHECK(*face_point(r, origin.face_of_vertex[v.index()]) == m.position(v));
+  Origins origins;
+  const Mesh r = zhang_wang_honeycomb(m, p, &origins);
+  for (VertexId v : m.vertices()) CHECK(*face_point(r, face_from(origins, origin_of(v))) == m.position(v));
 }
 
 TEST_CASE("zhang-wang: the matrix of formula (6) read off the code") {
@@ -393,14 +407,14 @@ TEST_CASE("zhang-wang: affine maps commute with the subdivision") {
 TEST_CASE("zhang-wang: hole faces stay holes and point spheres are copied") {
   Mesh grid = build_mesh(test::grid_soup(3, 2));
   const Mesh r = zhang_wang_honeycomb(grid);
-  REQUIRE(validate(r).valid());
+  require_valid(r);
   std::size_t holes = 0;
   for (FaceId f : r.faces()) holes += r.is_hole(f);
   CHECK(holes == 1);
   Mesh with_point = test::cube();
   with_point.create_vertex({5, 5, 5});
   const Mesh rp = zhang_wang_honeycomb(with_point);
-  REQUIRE(validate(rp).valid());
+  require_valid(rp);
   CHECK(statistics(rp).point_spheres == 1);
 }
 

@@ -1,6 +1,6 @@
 #pragma once
-// Runs the dlfl tool from a test: arguments in, exit code and captured stdout and stderr out, plus a scratch
-// directory per test process. Only where the tool is built (DLFL_TOOL names its path).
+// Runs the dlfl tool from a test: arguments in, exit code and captured stdout and stderr out (in the
+// process's scratch folder, test_helpers.h). Only where the tool is built (DLFL_TOOL names its path).
 
 #ifdef DLFL_TOOL
 #include <doctest/doctest.h>
@@ -13,15 +13,9 @@
 #include <fstream>
 #include <string>
 
-namespace dlfl::test {
+#include "test_helpers.h"
 
-// CTest runs each test case as its own process, in parallel: every process gets its own directory, so
-// no two of them share a captured stderr or an output file.
-inline std::filesystem::path scratch_dir() {
-  const auto dir = std::filesystem::temp_directory_path() / ("dlfl_tool_test_" + std::to_string(getpid()));
-  std::filesystem::create_directories(dir);
-  return dir;
-}
+namespace dlfl::test {
 
 struct Run {
   int exit_code;
@@ -48,12 +42,6 @@ inline Run run(const std::string& args) {
 
 inline std::string example(const char* name) {
   return std::string("'") + DLFL_SOURCE_DIR + "/data/" + name + "'";
-}
-
-inline std::filesystem::path scratch(const char* name) {
-  const auto dir = scratch_dir();
-  std::filesystem::remove(dir / name);
-  return dir / name;
 }
 
 }  // namespace dlfl::test

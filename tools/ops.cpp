@@ -22,8 +22,8 @@ const char* kind_name(OperationSpec::Kind kind) {
   return "?";
 }
 
-nlohmann::json op_json(const OperationSpec& op) {
-  nlohmann::json params = nlohmann::json::array();
+nlohmann::ordered_json op_json(const OperationSpec& op) {
+  nlohmann::ordered_json params = nlohmann::ordered_json::array();
   for (const auto& p : op.params) params.push_back(param_json(p));
   return {{"name", op.name},
           {"kind", kind_name(op.kind)},
@@ -57,7 +57,7 @@ Action add_ops(CLI::App& app) {
       return ok;
     }
     if (*json) {
-      nlohmann::json all = nlohmann::json::array();
+      nlohmann::ordered_json all = nlohmann::ordered_json::array();
       for (const auto& op : operations()) all.push_back(op_json(op));
       std::cout << all.dump(1) << "\n";
       return ok;

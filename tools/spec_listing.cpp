@@ -1,51 +1,79 @@
 #include "spec_listing.h"
 
+#include <algorithm>
 #include <cmath>
 
-namespace dlfl::tool {
+#include <dlfl/io/json_mesh.h>
 
-nlohmann::json param_json(const ParamSpec& spec) {
-  nlohmann::json j = {{"name", spec.name},
-                      {"type", std::string(to_string(spec.type))},
-                      {"doc", spec.doc},
-                      {"optional", spec.is_optional || !spec.default_value.empty()}};
-  if (!spec.default_value.empty()) j["default"] = spec.default_value.to_text();
-  if (!spec.default_doc.empty()) j["default_doc"] = spec.default_doc;
-  if (!std::isinf(spec.min) || !std::isinf(spec.max)) {
-    nlohmann::json range = {{"min_open", spec.min_open}, {"max_open", spec.max_open}};
-    range["min"] = std::isinf(spec.min) ? nlohmann::json(nullptr) : nlohmann::json(spec.min);
-    range["max"] = std::isinf(spec.max) ? nlohmann::json(nullptr) : nlohmann::json(spec.max);
-    j["range"] = range;
+namespace dlfl::tool {
+namespace {
+
+nlohmann::ordered_json bound_json(double x) {
+  return std::isinf(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x);
+}
+
+// "default 0.5", "default 'centroid'", "optional: a0 + a1/N for an N-sided face", "required".
+std::string default_text(const ParamSpec& p) {
+  if (p.default_value.empty()) {
+    if (!p.is_optional) return "required";
+    return p.default_doc.empty() ? std::string("optional") : "optional: " + p.default_doc;
   }
-  if (!spec.keywords.empty()) j["keywords"] = spec.keywords;
+  const std::string text = p.default_value.to_text();
+  return "default " + (p.default_value.kind() == Value::Kind::text ? "'" + text + "'" : text);
+}
+
+// "in [0, 1]", "in [0, 1] or 'symmetric'", "x,y,z or 'centroid'", "one of 'a', 'b'"; empty if the type alone
+// says it.
+std::string allowed_text(const ParamSpec& p) {
+  std::string s;
+  if (!p.range_text().empty()) s = "in " + p.range_text();
+  if (p.keywords.empty()) return s;
+  std::string words;
+  for (const std::string& k : p.keywords) words += (words.empty() ? "'" : ", '") + k + "'";
+  if (p.type == ParamType::text) return "one of " + words;
+  if (s.empty() && p.type == ParamType::point) s = "x,y,z";
+  return s.empty() ? "or " + words : s + " or " + words;
+}
+
+}  // namespace
+
+nlohmann::ordered_json param_json(const ParamSpec& p) {
+  nlohmann::ordered_json j;
+  j["name"] = p.name;
+  j["type"] = std::string(to_string(p.type));
+  j["default"] = value_to_json(p.default_value);
+  if (!p.default_doc.empty()) j["default_doc"] = p.default_doc;
+  if (!p.range_text().empty()) {
+    j["range"] = {{"min", bound_json(p.min)},
+                  {"max", bound_json(p.max)},
+                  {"min_open", p.min_open || std::isinf(p.min)},
+                  {"max_open", p.max_open || std::isinf(p.max)}};
+  }
+  j["keywords"] = p.keywords;
+  j["doc"] = p.doc;
+  j["optional"] = p.is_optional;
   return j;
 }
 
 std::string param_lines(std::span<const ParamSpec> specs) {
-  std::size_t width = 0;
-  for (const auto& s : specs) width = std::max(width, s.name.size());
+  if (specs.empty()) return "  (no parameters)\n";
+  std::size_t name_w = 0, type_w = 0, default_w = 0, allowed_w = 0;
+  for (const ParamSpec& p : specs) {
+    name_w = std::max(name_w, p.name.size());
+    type_w = std::max(type_w, to_string(p.type).size());
+    default_w = std::max(default_w, default_text(p).size());
+    allowed_w = std::max(allowed_w, allowed_text(p).size());
+  }
+  const auto pad = [](std::string text, std::size_t width) {
+    text.resize(std::max(text.size(), width), ' ');
+    return text;
+  };
   std::string out;
-  for (const auto& s : specs) {
-    std::string line =
-        "  " + s.name + std::string(width - s.name.size() + 2, ' ') + std::string(to_string(s.type));
-    if (!s.default_value.empty()) {
-      const std::string shown = s.default_value.to_text();
-      line += s.default_value.kind() == Value::Kind::text ? " = '" + shown + "'" : " = " + shown;
-    } else if (s.is_optional) {
-      line += " (optional" + (s.default_doc.empty() ? std::string() : ": " + s.default_doc) + ")";
-    } else {
-      line += " (required)";
-    }
-    if (const std::string r = s.range_text(); !r.empty()) line += "  in " + r;
-    if (!s.keywords.empty()) {
-      std::string words;
-      for (const auto& k : s.keywords) {
-        if (!words.empty()) words += '|';
-        words += k;
-      }
-      line += (s.type == ParamType::text ? "  one of " : "  or ") + words;
-    }
-    out += line + "  " + s.doc + "\n";
+  for (const ParamSpec& p : specs) {
+    out += "  " + pad(p.name, name_w) + "  " + pad(std::string(to_string(p.type)), type_w) + "  " +
+           pad(default_text(p), default_w) + "  ";
+    if (allowed_w > 0) out += pad(allowed_text(p), allowed_w) + "  ";  // no empty column
+    out += p.doc + "\n";
   }
   return out;
 }

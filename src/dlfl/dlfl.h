@@ -17,6 +17,7 @@
 #include <dlfl/cells/vtk.h>
 #include <dlfl/compact_map.h>
 #include <dlfl/create_face_manifold.h>
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/format.h>
 #include <dlfl/geometry.h>

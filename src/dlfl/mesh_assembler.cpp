@@ -106,14 +106,4 @@ Mesh MeshAssembler::finish() {
   return std::move(m);
 }
 
-const Mesh& dense_mesh(const Mesh& mesh, std::optional<Mesh>& storage) {
-  if (mesh.vertex_capacity() == mesh.num_vertices() && mesh.edge_capacity() == mesh.num_edges() &&
-      mesh.face_capacity() == mesh.num_faces() && mesh.corner_capacity() == mesh.num_corners()) {
-    return mesh;
-  }
-  storage = mesh;
-  storage->compact();
-  return *storage;
-}
-
 }  // namespace dlfl

@@ -6,7 +6,6 @@
 
 #include <cstdint>
 #include <glm/vec3.hpp>
-#include <optional>
 #include <span>
 #include <vector>
 
@@ -56,9 +55,5 @@ class MeshAssembler {
   Mesh mesh_;
   detail::LargeVector<std::uint32_t> twin_;
 };
-
-/// `mesh` itself when it has no removed elements (handles are dense: 0 .. count-1), else a compacted copy
-/// held in `storage`. Schemes that number their output from input handles read their input through this.
-const Mesh& dense_mesh(const Mesh& mesh, std::optional<Mesh>& storage);
 
 }  // namespace dlfl

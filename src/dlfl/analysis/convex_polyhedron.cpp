@@ -4,25 +4,18 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <numbers>
-#include <sstream>
 
 #include <dlfl/errors.h>
+#include <dlfl/format.h>
 
 namespace dlfl {
 namespace {
 
 std::string format_point(const glm::dvec3& p) {
-  std::ostringstream s;
-  s.precision(17);
-  s << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-  return s.str();
-}
-
-std::string format_number(double x) {
-  std::ostringstream s;
-  s.precision(6);
-  s << x;
-  return s.str();
+  // Appended rather than "(" + ...: GCC 12 warns (-Wrestrict) about a string inserted at the front.
+  std::string s = "(";
+  s.append(format_number(p.x)).append(", ").append(format_number(p.y)).append(", ");
+  return s.append(format_number(p.z)).append(")");
 }
 
 double diagonal(const Mesh& mesh) {

@@ -7,8 +7,8 @@
 #include <vector>
 
 #include <dlfl/cells/detail/vertex_set_map.h>
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
-#include <dlfl/mesh_assembler.h>
 
 namespace dlfl {
 
@@ -127,9 +127,7 @@ CellComplex polyhedron_to_hexahedra(const Mesh& input) {
   }
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
 
   // Components, by a walk over the edges; each one gets its own centroid and must be a sphere.
   constexpr std::uint32_t unset = 0xFFFFFFFFu;

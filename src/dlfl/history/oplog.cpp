@@ -17,44 +17,6 @@ std::string where(std::size_t op, const std::string& field) {
   return "op " + std::to_string(op) + ", field '" + field + "'";
 }
 
-// ---- writing: a value by its kind ------------------------------------------------------------------------
-
-json point_json(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
-
-json value_json(const Value& v) {
-  switch (v.kind()) {
-    case Value::Kind::empty:
-      return nullptr;
-    case Value::Kind::boolean:
-      return v.as_bool();
-    case Value::Kind::integer:
-      return v.as_integer();
-    case Value::Kind::number:
-      return v.as_number();
-    case Value::Kind::text:
-      return v.as_text();
-    case Value::Kind::point:
-      return point_json(v.as_point());
-    case Value::Kind::integers:
-      return v.as_integers();
-    case Value::Kind::numbers:
-      return v.as_numbers();
-    case Value::Kind::points: {
-      json list = json::array();
-      for (const auto& p : v.as_points()) list.push_back(point_json(p));
-      return list;
-    }
-    case Value::Kind::mesh:
-      return mesh_to_json(v.as_mesh());
-    case Value::Kind::params: {
-      json object = json::object();
-      for (const auto& [name, value] : v.as_params()) object[name] = value_json(value);
-      return object;
-    }
-  }
-  return nullptr;
-}
-
 // ---- reading: a field by its declared type ----------------------------------------------------------------
 
 class FieldReader {
@@ -192,7 +154,7 @@ std::string log_text(const Editor& editor) {
   json ops = json::array();
   for (const LoggedOperation& logged : editor.log()) {
     json op = {{"op", logged.name}};
-    for (const auto& [field, value] : logged.params) op[field] = value_json(value);
+    for (const auto& [field, value] : logged.params) op[field] = value_to_json(value);
     ops.push_back(std::move(op));
   }
   const json doc = {{"format", "dlfl-oplog"},

@@ -330,4 +330,39 @@ Mesh mesh_from_json(const nlohmann::json& doc, const std::string& name) {
   }
 }
 
+nlohmann::json value_to_json(const Value& v) {
+  const auto point = [](const glm::dvec3& p) { return nlohmann::json{p.x, p.y, p.z}; };
+  switch (v.kind()) {
+    case Value::Kind::empty:
+      return nullptr;
+    case Value::Kind::boolean:
+      return v.as_bool();
+    case Value::Kind::integer:
+      return v.as_integer();
+    case Value::Kind::number:
+      return v.as_number();
+    case Value::Kind::text:
+      return v.as_text();
+    case Value::Kind::point:
+      return point(v.as_point());
+    case Value::Kind::integers:
+      return v.as_integers();
+    case Value::Kind::numbers:
+      return v.as_numbers();
+    case Value::Kind::points: {
+      nlohmann::json list = nlohmann::json::array();
+      for (const auto& p : v.as_points()) list.push_back(point(p));
+      return list;
+    }
+    case Value::Kind::mesh:
+      return mesh_to_json(v.as_mesh());
+    case Value::Kind::params: {
+      nlohmann::json object = nlohmann::json::object();
+      for (const auto& [name, value] : v.as_params()) object[name] = value_to_json(value);
+      return object;
+    }
+  }
+  return nullptr;
+}
+
 }  // namespace dlfl

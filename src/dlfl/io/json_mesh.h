@@ -1,11 +1,13 @@
 #pragma once
 // The native JSON mesh format: the full DLFL structure (every handle, corner order, hole flags, exact
-// positions), so a mesh saves and reloads equal under operator==. Layout documented in docs/formats.md.
+// positions), so a mesh saves and reloads equal under operator==. Layout documented in docs/formats.md. Also
+// the JSON of a parameter value (which may hold a mesh), as operation logs and listings write it.
 
 #include <nlohmann/json.hpp>
 #include <string>
 
 #include <dlfl/mesh.h>
+#include <dlfl/parameters.h>
 
 namespace dlfl {
 
@@ -18,5 +20,10 @@ nlohmann::json mesh_to_json(const Mesh& mesh);
 /// missing or mistyped field, an out-of-range handle, a structure that fails validation). The "face_points"
 /// array of older documents becomes the "face_point" face attribute.
 Mesh mesh_from_json(const nlohmann::json& doc, const std::string& name);
+
+/// A parameter value as JSON, typed by its kind: null when empty, true, 1, 0.5, "text", [x, y, z], lists as
+/// arrays, a mesh as its document (above), a parameter set as an object. Operation logs write values so,
+/// and `dlfl ops` / `dlfl schemes --json` their defaults.
+nlohmann::json value_to_json(const Value& value);
 
 }  // namespace dlfl

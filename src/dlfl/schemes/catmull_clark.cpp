@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/detail/quad_split.h>
@@ -13,10 +14,7 @@ namespace dlfl {
 Mesh catmull_clark(const Mesh& input, Origins* origins) {
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
   for (std::uint32_t v = 0; v < nv; ++v) {
     if (m.is_point_sphere(VertexId(v))) {
       throw TopologyError("catmull-clark: " + to_string(VertexId(v)) + " is a point sphere (no edge)");
@@ -66,11 +64,10 @@ Mesh catmull_clark(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec catmull_clark_scheme() {
-  return {"catmull-clark",
-          "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return catmull_clark(m, origins); }};
+  return parameterless_scheme(
+      "catmull-clark",
+      "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh",
+      catmull_clark);
 }
 
 }  // namespace detail

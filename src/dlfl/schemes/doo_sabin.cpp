@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
@@ -16,14 +17,6 @@ namespace {
 
 // Faces up to this size use a tabulated weight row (O(n^2) per face); larger ones the closed form (O(n)).
 constexpr std::uint32_t max_tabulated = 64;
-
-// The k-th live vertex of `mesh`: the handle that dense_mesh renumbered to k (compact keeps the order).
-VertexId original_vertex(const Mesh& mesh, std::uint32_t k) {
-  for (VertexId v : mesh.vertices()) {
-    if (k-- == 0) return v;
-  }
-  return VertexId();
-}
 
 // Weight rows alpha_0 .. alpha_{n-1}, computed once per face size. cos is evaluated at min(k, n-k) so that
 // alpha_k == alpha_{n-k} exactly.
@@ -89,10 +82,7 @@ void face_points(const glm::dvec3* v, glm::dvec3* p, std::uint32_t n, WeightTabl
 Mesh doo_sabin(const Mesh& input, Origins* origins) {
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
 
   // Output corners: F-faces take 0 .. nc-1 (face by face), E-face e takes e_base + 4e .. + 3, V-faces take
   // v_base .. (vertex by vertex). slot[c] / vslot[c] is the output corner for input corner c in its F-face /
@@ -111,7 +101,7 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
     offsets[nf + ne + v] = next_slot;
     const CornerId first = m.corner(VertexId(v));
     if (!m.edge(first).valid()) {
-      throw TopologyError("doo-sabin: " + to_string(original_vertex(input, v)) +
+      throw TopologyError("doo-sabin: " + to_string(original_handle<VertexId>(input, v)) +
                           " is a point sphere (no edge)");
     }
     // Counter-clockwise around v, so that the V-face is oriented like the input.
@@ -121,7 +111,7 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
       c = m.prev_around_vertex(c);
     } while (c != first);
     if (next_slot - offsets[nf + ne + v] == 1) {
-      throw TopologyError("doo-sabin: " + to_string(original_vertex(input, v)) +
+      throw TopologyError("doo-sabin: " + to_string(original_handle<VertexId>(input, v)) +
                           " has valence 1 (its face would have a single corner)");
     }
   }
@@ -211,11 +201,10 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec doo_sabin_scheme() {
-  return {"doo-sabin",
-          "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return doo_sabin(m, origins); }};
+  return parameterless_scheme(
+      "doo-sabin",
+      "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent",
+      doo_sabin);
 }
 
 }  // namespace detail

@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/detail/corner_origins.h>
@@ -10,38 +11,23 @@
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
-namespace {
-
-// The k-th live element of a range: the handle that dense_mesh renumbered to k (compact keeps the order).
-template <class Range>
-auto original(const Range& range, std::uint32_t k) {
-  for (auto h : range) {
-    if (k-- == 0) return h;
-  }
-  return decltype(*range.begin())();
-}
-
-}  // namespace
 
 Mesh dual(const Mesh& input, Origins* origins) { return detail::dual(input, origins, nullptr); }
 
 Mesh detail::dual(const Mesh& input, Origins* origins, std::vector<Origin>* corners) {
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
 
   for (std::uint32_t f = 0; f < nf; ++f) {
     if (m.is_hole(FaceId(f))) {
-      throw TopologyError("dual: " + to_string(original(input.faces(), f)) +
+      throw TopologyError("dual: " + to_string(original_handle<FaceId>(input, f)) +
                           " is a hole: the dual of an open mesh is not defined");
     }
   }
   for (std::uint32_t e = 0; e < ne; ++e) {
     if (m.face(EdgeId(e), 0) == m.face(EdgeId(e), 1)) {
-      throw TopologyError("dual: " + to_string(original(input.edges(), e)) +
+      throw TopologyError("dual: " + to_string(original_handle<EdgeId>(input, e)) +
                           " has the same face on both sides (its dual would be a self-loop)");
     }
   }
@@ -61,7 +47,8 @@ Mesh detail::dual(const Mesh& input, Origins* origins, std::vector<Origin>* corn
     offsets[v] = next_slot;
     const CornerId first = m.corner(VertexId(v));
     if (!m.edge(first).valid()) {
-      throw TopologyError("dual: " + to_string(original(input.vertices(), v)) + " is a point sphere (no edge)");
+      throw TopologyError("dual: " + to_string(original_handle<VertexId>(input, v)) +
+                          " is a point sphere (no edge)");
     }
     CornerId c = first;
     do {
@@ -111,11 +98,10 @@ Mesh detail::dual(const Mesh& input, Origins* origins, std::vector<Origin>* corn
 namespace detail {
 
 SchemeSpec dual_scheme() {
-  return {"dual",
-          "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return dlfl::dual(m, origins); }};
+  return parameterless_scheme(
+      "dual",
+      "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge",
+      dlfl::dual);
 }
 
 }  // namespace detail

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -11,6 +10,7 @@
 #include <vector>
 
 #include <dlfl/errors.h>
+#include <dlfl/format.h>
 #include <dlfl/schemes/detail/honeycomb_params.h>
 #include <dlfl/schemes/detail/honeycomb_remesh.h>
 #include <dlfl/schemes/detail/scheme_table.h>
@@ -47,22 +47,14 @@ FaceSummary summarize(const Mesh& mesh) {
   return s;
 }
 
-// The shortest text that reads back as x, so that a message never shows a rejected value as an accepted one
-// (a fixed precision would print 1 + 1e-9 as "1").
-std::string number(double x) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, result.ptr);
-}
-
 bool in_open_unit(double x) { return x > 0.0 && x < 1.0; }  // false for NaN
 
 void check_params(const FaceSummary& s, const HoneycombParams& p) {
   if (!(p.t >= 0.0 && p.t <= 1.0))
-    throw InvalidArgument("honeycomb: parameter t = " + number(p.t) + " is outside [0, 1]");
+    throw InvalidArgument("honeycomb: parameter t = " + format_number(p.t) + " is outside [0, 1]");
   if (p.a) {
     if (!in_open_unit(*p.a))
-      throw InvalidArgument("honeycomb: parameter a = " + number(*p.a) + " is outside (0, 1)");
+      throw InvalidArgument("honeycomb: parameter a = " + format_number(*p.a) + " is outside (0, 1)");
     return;
   }
   if (s.polygon_faces == 0) return;
@@ -71,8 +63,8 @@ void check_params(const FaceSummary& s, const HoneycombParams& p) {
   for (std::uint32_t n : {s.min_size, s.max_size}) {
     const double a = honeycomb_tension(p, int(n));
     if (!in_open_unit(a)) {
-      throw InvalidArgument("honeycomb: tension a0 + a1/N = " + number(a) + " for a " + std::to_string(n) +
-                            "-sided face is outside (0, 1) (parameters a0, a1)");
+      throw InvalidArgument("honeycomb: tension a0 + a1/N = " + format_number(a) + " for a " +
+                            std::to_string(n) + "-sided face is outside (0, 1) (parameters a0, a1)");
     }
   }
 }

@@ -1,46 +1,18 @@
 #include <dlfl/schemes/loop.h>
 
-#include <array>
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <string>
 #include <vector>
 
-#include <dlfl/errors.h>
+#include <dlfl/dense_mesh.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/require_triangles.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
+#include <dlfl/schemes/detail/valence_weights.h>
 
 namespace dlfl {
-
-namespace {
-
-// Loop's vertex weight for valence n.
-double loop_beta(std::uint32_t n) {
-  const double c = 3.0 / 8.0 + std::cos(2.0 * std::numbers::pi / n) / 4.0;
-  return (5.0 / 8.0 - c * c) / n;
-}
-
-// Refuses point spheres and non-triangles, in face order.
-void check_triangles(const Mesh& m) {
-  for (FaceId f : m.faces()) {
-    const std::uint32_t n = m.size(f);
-    if (n == 3) [[likely]]
-      continue;
-    if (n == 1) {  // only a point sphere has a one-corner face (a self-loop is illegal)
-      throw TopologyError("loop: " + to_string(m.vertex(m.first_corner(f))) + " is a point sphere (no edge)");
-    }
-    if (m.is_hole(f)) {
-      throw TopologyError("loop: " + to_string(f) + " is a hole (a boundary loop) with " + std::to_string(n) +
-                          " corners; Loop subdivision needs triangles, holes included");
-    }
-    throw TopologyError("loop: " + to_string(f) + " has " + std::to_string(n) +
-                        " corners; Loop subdivision needs triangles");
-  }
-}
-
-}  // namespace
 
 // Connectivity, in closed form from the input's navigation.
 //
@@ -77,13 +49,11 @@ void check_triangles(const Mesh& m) {
 // since prev(next(s)) = s, so edge(prev(next(s))) = e. So one pass over the faces fills the inner corners
 // (3c + 1 and the central triangles) and one pass over the edges fills the rest, with the edge points.
 Mesh loop(const Mesh& input, Origins* origins) {
-  check_triangles(input);  // on the input, so that errors name its own handles, not compacted ones
+  // On the input, so that errors name its own handles, not compacted ones.
+  detail::require_triangles(input, "loop", "Loop subdivision", detail::TriangleHoles::allowed);
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());  // = 3 nf
+  const auto [nv, ne, nf, nc] = dense_counts(m);                // nc = 3 nf
   const std::uint32_t edge_base = nv;                           // vertex of the edge point of edge e
   const std::uint32_t central_base = 3 * nc;                    // first corner of the central triangles
   MeshAssembler out(std::size_t(nv) + ne, std::size_t(nc) + nf, 3);
@@ -135,12 +105,14 @@ Mesh loop(const Mesh& input, Origins* origins) {
     out.set_corner(3 * n0 + 2, edge_base + e, 3 * s1.index() + 0);
   }
 
-  // Vertex points, with beta from a small table for the usual valences.
-  std::array<double, 32> beta_table{};
-  for (std::uint32_t n = 1; n < beta_table.size(); ++n) beta_table[n] = loop_beta(n);
+  // Vertex points, with Loop's weight beta for valence n.
+  const detail::ValenceWeights beta_of([](std::uint32_t n) {
+    const double c = 3.0 / 8.0 + std::cos(2.0 * std::numbers::pi / n) / 4.0;
+    return (5.0 / 8.0 - c * c) / n;
+  });
   for (std::uint32_t v = 0; v < nv; ++v) {
     const std::uint32_t n = valence[v];  // >= 2: no point spheres, no self-loops
-    const double beta = n < beta_table.size() ? beta_table[n] : loop_beta(n);
+    const double beta = beta_of(n);
     out.set_position(v, (1.0 - n * beta) * m.position(VertexId(v)) + beta * sum[v]);
   }
   Mesh result = out.finish();
@@ -177,11 +149,7 @@ Mesh loop(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec loop_scheme() {
-  return {"loop",
-          "Loop: every triangle into four, on triangle meshes",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return loop(m, origins); }};
+  return parameterless_scheme("loop", "Loop: every triangle into four, on triangle meshes", loop);
 }
 
 }  // namespace detail

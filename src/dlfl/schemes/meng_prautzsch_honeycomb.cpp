@@ -6,9 +6,10 @@
 #include <limits>
 #include <vector>
 
+#include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
-#include <dlfl/analysis/convex_polyhedron.h>
 #include <dlfl/schemes/detail/corner_origins.h>
 #include <dlfl/schemes/detail/meng_prautzsch_params.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
@@ -42,10 +43,7 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
   const glm::dvec3 center = params.center.value_or(vertex_centroid(m));
   require_convex_polyhedron(m, center, "mp-honeycomb");
   detail::check_output_size("mp-honeycomb", 4.0 * double(m.num_edges()));
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
 
   // Per-edge split fractions of the exterior angle, per-face taus (drawn from the seed when random).
   const auto [fraction, tau] = detail::mp_choices(ne, nf, params.ratio, params.tau, params.random);
@@ -114,7 +112,8 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
   // c0, c1 its side corners and Q(x) the f-face vertex of corner x. Seen from an input corner x, its edge's
   // hexagon holds three of x's half-edges: "down" Q(x) -> vertex(x), "across" Q(next x) -> Q(x) (the twin of
   // the f-face edge) and "up" vertex(next x) -> Q(next x).
-  const auto hexagon = [&](CornerId x) { return nc + 6 * m.edge(x).index(); };
+  // nc is copied in: clang before 16 cannot capture a structured binding.
+  const auto hexagon = [&m, nc = nc](CornerId x) { return nc + 6 * m.edge(x).index(); };
   const auto on_side_1 = [&](CornerId x) { return m.corner(m.edge(x), 1) == x; };
   const auto down = [&](CornerId x) { return hexagon(x) + (on_side_1(x) ? 2 : 5); };
   const auto across = [&](CornerId x) { return hexagon(x) + (on_side_1(x) ? 1 : 4); };

@@ -6,9 +6,10 @@
 #include <limits>
 #include <vector>
 
+#include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
-#include <dlfl/analysis/convex_polyhedron.h>
 #include <dlfl/schemes/detail/corner_origins.h>
 #include <dlfl/schemes/detail/meng_prautzsch_params.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
@@ -50,10 +51,7 @@ Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origin
   const glm::dvec3 center = params.center.value_or(vertex_centroid(m));
   require_convex_polyhedron(m, center, "mp-pushing");
   detail::check_output_size("mp-pushing", 4.0 * double(m.num_edges()));
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
 
   // Per-edge split fractions along the edge, per-vertex taus (drawn from the seed when random).
   const auto [fraction, tau] = detail::mp_choices(ne, nv, params.ratio, params.tau, params.random);
@@ -87,7 +85,8 @@ Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origin
   // Connectivity. The triangle of corner c runs vertex(c), m(edge c), m(edge prev c): its first edge is half
   // of the old edge(c), whose other half ends the triangle of the corner across; its second faces the central
   // face; its third is half of edge(prev c), which the triangle of the corner across starts with.
-  const auto triangle = [&](CornerId x) { return nc + 3 * x.index(); };
+  // nc is copied in: clang before 16 cannot capture a structured binding.
+  const auto triangle = [nc = nc](CornerId x) { return nc + 3 * x.index(); };
   for (std::uint32_t i = 0; i < nc; ++i) {
     const CornerId c(i);
     out.set_corner(position[i], nv + m.edge(c).index(), triangle(m.next(c)) + 1);

@@ -3,6 +3,7 @@
 #include <optional>
 #include <vector>
 
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/detail/quad_split.h>
@@ -19,9 +20,7 @@ void refuse_point_spheres(const Mesh& m, const char* scheme) {
 }
 
 Mesh split_dense(const Mesh& m) {
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
   MeshAssembler out(std::size_t(nv) + ne + nf, m.num_corners(), 4);
   for (std::uint32_t v = 0; v < nv; ++v) out.set_position(v, m.position(VertexId(v)));
   for (std::uint32_t e = 0; e < ne; ++e) {
@@ -41,9 +40,7 @@ Mesh split_dense(const Mesh& m) {
 // + F) / 4; a fine vertex is the average of the Q of the fine quads around it. Face points come out at their
 // face's centroid (the average over the face of Q is F), so only vertex and edge points need sums.
 Mesh mlca_quad_step(const Mesh& m) {
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
   const std::uint32_t edge_base = nv, face_base = nv + ne;
   MeshAssembler out(std::size_t(nv) + ne + nf, m.num_corners(), 4);
 
@@ -183,11 +180,10 @@ Mesh mlca(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec mlca_scheme() {
-  return {"mlca",
-          "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return mlca(m, origins); }};
+  return parameterless_scheme(
+      "mlca",
+      "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed",
+      mlca);
 }
 
 }  // namespace detail

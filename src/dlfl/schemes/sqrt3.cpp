@@ -1,45 +1,18 @@
 #include <dlfl/schemes/sqrt3.h>
 
-#include <array>
 #include <cmath>
 #include <numbers>
 #include <optional>
-#include <string>
 #include <vector>
 
-#include <dlfl/errors.h>
+#include <dlfl/dense_mesh.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/require_triangles.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
+#include <dlfl/schemes/detail/valence_weights.h>
 
 namespace dlfl {
-
-namespace {
-
-// Kobbelt's vertex weight a_n for valence n.
-double sqrt3_alpha(std::uint32_t n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; }
-
-// Refuses point spheres, holes and non-triangles, in face order.
-void check_triangles(const Mesh& m) {
-  for (FaceId f : m.faces()) {
-    const std::uint32_t n = m.size(f);
-    if (n == 3 && !m.is_hole(f)) [[likely]]
-      continue;
-    if (n == 1) {  // only a point sphere has a one-corner face (a self-loop is illegal)
-      throw TopologyError("sqrt3: " + to_string(m.vertex(m.first_corner(f))) +
-                          " is a point sphere (no edge)");
-    }
-    if (m.is_hole(f)) {
-      throw TopologyError(
-          "sqrt3: " + to_string(f) + " is a hole (a boundary loop) with " + std::to_string(n) +
-          " corners; sqrt(3) subdivision has no boundary rule and needs a closed triangle mesh");
-    }
-    throw TopologyError("sqrt3: " + to_string(f) + " has " + std::to_string(n) +
-                        " corners; sqrt(3) subdivision needs triangles");
-  }
-}
-
-}  // namespace
 
 // Connectivity, in closed form from the input's navigation.
 //
@@ -74,13 +47,11 @@ void check_triangles(const Mesh& m) {
 // Every output corner is set exactly once (corner 0 and 1 of T(s) for the edge leaving s, corner 2 of T(r)
 // for the edge leaving prev(r)), so one pass over the edges builds the whole connectivity.
 Mesh sqrt3(const Mesh& input, Origins* origins) {
-  check_triangles(input);  // on the input, so that errors name its own handles, not compacted ones
+  // On the input, so that errors name its own handles, not compacted ones.
+  detail::require_triangles(input, "sqrt3", "sqrt(3) subdivision", detail::TriangleHoles::refused);
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());  // = 3 nf
+  const auto [nv, ne, nf, nc] = dense_counts(m);                // nc = 3 nf
   const std::uint32_t face_base = nv;                           // vertex of the face point of face f
   MeshAssembler out(std::size_t(nv) + nf, nc, 3);
 
@@ -114,12 +85,12 @@ Mesh sqrt3(const Mesh& input, Origins* origins) {
     out.set_corner(3 * k1 + 1, f0, 3 * k0 + 1);
   }
 
-  // Vertex points, with a_n from a small table for the usual valences.
-  std::array<double, 32> weight_table{};
-  for (std::uint32_t n = 1; n < weight_table.size(); ++n) weight_table[n] = sqrt3_alpha(n);
+  // Vertex points, with Kobbelt's weight a_n for valence n.
+  const detail::ValenceWeights alpha_of(
+      [](std::uint32_t n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; });
   for (std::uint32_t v = 0; v < nv; ++v) {
     const std::uint32_t n = valence[v];  // >= 2: no point spheres, no self-loops
-    const double alpha = n < weight_table.size() ? weight_table[n] : sqrt3_alpha(n);
+    const double alpha = alpha_of(n);
     out.set_position(v, (1.0 - alpha) * m.position(VertexId(v)) + (alpha / n) * sum[v]);
   }
   Mesh result = out.finish();
@@ -149,11 +120,9 @@ Mesh sqrt3(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec sqrt3_scheme() {
-  return {"sqrt3",
-          "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes",
-          {},
-          {},
-          [](const Mesh& m, const Params&, Origins* origins) { return sqrt3(m, origins); }};
+  return parameterless_scheme(
+      "sqrt3",
+      "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes", sqrt3);
 }
 
 }  // namespace detail

@@ -1,6 +1,5 @@
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
 
-#include <charconv>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -8,21 +7,16 @@
 #include <vector>
 
 #include <dlfl/errors.h>
+#include <dlfl/format.h>
 #include <dlfl/schemes/detail/honeycomb_remesh.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
 namespace dlfl {
 namespace {
 
-std::string number(double x) {
-  char buffer[64];
-  const auto result = std::to_chars(buffer, buffer + sizeof buffer, x);
-  return std::string(buffer, result.ptr);
-}
-
 void check_unit(const char* name, double x) {
   if (!(x >= 0.0 && x <= 1.0)) {
-    throw InvalidArgument(std::string("honeycomb-zw: parameter ") + name + " = " + number(x) +
+    throw InvalidArgument(std::string("honeycomb-zw: parameter ") + name + " = " + format_number(x) +
                           " is outside [0, 1]");
   }
 }
@@ -113,8 +107,7 @@ void check_zhang_wang_params(const ZhangWangParams& p) {
   check_unit("alpha", p.alpha);
 }
 
-Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombOrigin* origin,
-                          Origins* origins) {
+Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, Origins* origins) {
   check_zhang_wang_params(p);
 
   // The CCV of every input face: its control point, or its centroid.
@@ -164,10 +157,6 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, HoneycombO
         (p.alpha * neighbour_sum[v.index()] + (1.0 - p.alpha) * ccv_sum[v.index()]) / double(n);
     const FaceId around = out.face_of_vertex[v.index()];
     result_points[around] = check_finite((1.0 - p.c) * mesh.position(v) + p.c * average, around);
-  }
-  if (origin) {
-    origin->face_of_face = std::move(out.face_of_face);
-    origin->face_of_vertex = std::move(out.face_of_vertex);
   }
   return std::move(out.mesh);
 }
@@ -230,7 +219,7 @@ SchemeSpec zhang_wang_honeycomb_scheme() {
         z.b = p.number("b");
         z.c = p.number("c");
         z.alpha = p.number("alpha");
-        return zhang_wang_honeycomb(m, z, nullptr, origins);
+        return zhang_wang_honeycomb(m, z, origins);
       }};
 }
 

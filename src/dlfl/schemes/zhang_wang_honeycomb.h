@@ -22,7 +22,6 @@
 
 #include <optional>
 #include <string_view>
-#include <vector>
 
 #include <dlfl/mesh.h>
 #include <dlfl/schemes/origins.h>
@@ -68,25 +67,17 @@ double zhang_wang_a(const ZhangWangParams& p, int n);
 /// Throws InvalidArgument naming the parameter if a weight is outside [0, 1] (or NaN).
 void check_zhang_wang_params(const ZhangWangParams& p);
 
-/// Where the faces of a step came from, for tracking a face (and its CCV) across levels.
-struct HoneycombOrigin {
-  /// By input face handle: the face's shrunken copy (invalid for removed faces and point spheres).
-  std::vector<FaceId> face_of_face;
-  /// By input vertex handle: the new face around the vertex (a point sphere's: its copy's face).
-  std::vector<FaceId> face_of_vertex;
-};
-
 /// One step. The input is not modified. The result has the honeycomb's topology (V' = 2E, E' = 3E,
 /// F' = F + V, every new vertex 3-valent, each shrunken face of its old face's size, each vertex face of
 /// twice its old vertex's valence, the Euler characteristic and genus of every component kept), and every
 /// face of it (point spheres aside) carries its CCV. Handles are those of `honeycomb` on the same mesh. The
 /// result has no attribute but "face_point".
 /// The shrunken copy of a face starts at the point for the face's first corner (the point on the edge leaving
-/// it). When `origin` is given it receives where each new face came from. Throws InvalidArgument for a bad
-/// parameter or a non-finite new point. When `origins` is given it receives the origin of every element,
-/// those of `honeycomb` (dlfl/schemes/honeycomb.h); it costs nothing when not asked for.
-Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p = {}, HoneycombOrigin* origin = nullptr,
-                          Origins* origins = nullptr);
+/// it). Throws InvalidArgument for a bad parameter or a non-finite new point. When `origins` is given it
+/// receives the origin of every element, those of `honeycomb` (dlfl/schemes/honeycomb.h): the shrunken copy
+/// of a face stems from that face, the new face around a vertex from that vertex, which tracks a face (and
+/// its CCV) across levels. It costs nothing when not asked for.
+Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p = {}, Origins* origins = nullptr);
 
 /// The limit of the centre of face f under repeated steps, formula (15): with q its CCV (or centroid),
 /// p_bar its centroid and n its size,

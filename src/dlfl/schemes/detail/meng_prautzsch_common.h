@@ -8,13 +8,13 @@
 #include <glm/vec3.hpp>
 #include <optional>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
-#include <dlfl/errors.h>
-#include <dlfl/mesh.h>
 #include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/errors.h>
+#include <dlfl/format.h>
+#include <dlfl/mesh.h>
 
 namespace dlfl {
 
@@ -45,13 +45,6 @@ class MpRandom {
 };
 
 namespace detail {
-
-/// A number for an error message, as short as it can be ("0", "1.5", "1e-12").
-inline std::string format_number(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
-}
 
 /// Throws InvalidArgument naming `scheme` and the parameter if tau is not in (0, 1), ratio is not positive
 /// and finite, the centre is not finite, or epsilon is not in (0, 1/2] (checked whether or not random choices

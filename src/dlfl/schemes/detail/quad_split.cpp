@@ -1,14 +1,14 @@
 #include <dlfl/schemes/detail/quad_split.h>
 
+#include <dlfl/dense_mesh.h>
+
 namespace dlfl::detail {
 
 // Twins follow from the corners around the quad's corner: across the outgoing edge lies the quad of the next
 // corner around the vertex, across the edge into the face point the quad of the next corner of the face, and
 // so on.
 void assemble_quad_split(const Mesh& m, MeshAssembler& out) {
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
   const std::uint32_t edge_base = nv, face_base = nv + ne;
   for (std::uint32_t k = 0; k < nc; ++k) {
     const CornerId c(k);
@@ -25,10 +25,7 @@ void assemble_quad_split(const Mesh& m, MeshAssembler& out) {
 }
 
 void quad_split_origins(const Mesh& m, const Mesh& out, const InputHandles& in, Origins& origins) {
-  const auto nv = static_cast<std::uint32_t>(m.num_vertices());
-  const auto ne = static_cast<std::uint32_t>(m.num_edges());
-  const auto nf = static_cast<std::uint32_t>(m.num_faces());
-  const auto nc = static_cast<std::uint32_t>(m.num_corners());
+  const auto [nv, ne, nf, nc] = dense_counts(m);
   reset_origins(origins, out);
   for (std::uint32_t v = 0; v < nv; ++v) origins.vertices[v] = in.vertex(v);
   for (std::uint32_t e = 0; e < ne; ++e) origins.vertices[nv + e] = in.edge(e);

@@ -3,9 +3,22 @@
 // next to its implementation. scheme_registry.cpp lists them; adding a scheme is one new file plus one line
 // there and one here.
 
+#include <string>
+#include <utility>
+
 #include <dlfl/schemes/scheme_registry.h>
 
 namespace dlfl::detail {
+
+/// The declaration of a scheme without parameters, whose step is `step(mesh, origins)`.
+inline SchemeSpec parameterless_scheme(std::string name, std::string doc,
+                                       Mesh (*step)(const Mesh&, Origins*)) {
+  SchemeSpec spec;
+  spec.name = std::move(name);
+  spec.doc = std::move(doc);
+  spec.apply = [step](const Mesh& mesh, const Params&, Origins* origins) { return step(mesh, origins); };
+  return spec;
+}
 
 SchemeSpec catmull_clark_scheme();         // catmull_clark.cpp
 SchemeSpec doo_sabin_scheme();             // doo_sabin.cpp
