@@ -317,6 +317,40 @@ std::vector<std::string_view> split(std::string_view text, char sep) {
   return parts;
 }
 
+// Well-formed UTF-8 (Unicode table 3-7: no overlong forms, surrogates or code points past U+10FFFF). Text
+// values go into operation logs, and JSON holds nothing else.
+bool is_utf8(std::string_view s) {
+  std::size_t i = 0;
+  while (i < s.size()) {
+    const auto b = static_cast<unsigned char>(s[i]);
+    std::size_t n = 0;              // continuation bytes
+    unsigned lo = 0x80, hi = 0xBF;  // the allowed range of the first continuation byte
+    if (b < 0x80) {
+      ++i;
+      continue;
+    } else if (b >= 0xC2 && b <= 0xDF) {
+      n = 1;
+    } else if (b >= 0xE0 && b <= 0xEF) {
+      n = 2;
+      if (b == 0xE0) lo = 0xA0;
+      if (b == 0xED) hi = 0x9F;
+    } else if (b >= 0xF0 && b <= 0xF4) {
+      n = 3;
+      if (b == 0xF0) lo = 0x90;
+      if (b == 0xF4) hi = 0x8F;
+    } else {
+      return false;
+    }
+    if (s.size() - i <= n) return false;
+    for (std::size_t k = 1; k <= n; ++k) {
+      const auto c = static_cast<unsigned char>(s[i + k]);
+      if (c < (k == 1 ? lo : 0x80) || c > (k == 1 ? hi : 0xBF)) return false;
+    }
+    i += n + 1;
+  }
+  return true;
+}
+
 bool whole(double d) { return std::isfinite(d) && d == std::floor(d) && std::abs(d) <= 0x1.0p53; }
 
 // The list element types and the single-value type each list holds.
@@ -587,6 +621,7 @@ Value checked(std::string_view context, const ParamSpec& spec, const Value& give
       }
       break;
     case ParamType::text:
+      if (!is_utf8(v->as_text())) bad(context, spec, "is not valid UTF-8 text");
       if (!spec.keywords.empty()) {
         bool known = false;
         for (const auto& k : spec.keywords) known = known || v->as_text() == k;

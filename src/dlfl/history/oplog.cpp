@@ -161,7 +161,22 @@ std::string log_text(const Editor& editor) {
                     {"version", oplog_version},
                     {"undo_limit", editor.options().undo_limit},
                     {"ops", std::move(ops)}};
-  return doc.dump(1);
+  try {
+    return doc.dump(1);
+  } catch (const json::type_error&) {
+    // JSON holds UTF-8 only. Parameters are checked for it; a path given to Editor::set_mesh is not.
+    const json& written = doc["ops"];
+    std::size_t i = 0;
+    for (; i + 1 < written.size(); ++i) {
+      try {
+        (void)written[i].dump();
+      } catch (const json::type_error&) {
+        break;
+      }
+    }
+    throw InvalidArgument("the log cannot be written: op " + std::to_string(i) + " (" + editor.log()[i].name +
+                          ") has text that is not valid UTF-8, which JSON cannot hold");
+  }
 }
 
 void write_log(const Editor& editor, const std::filesystem::path& path) {

@@ -228,6 +228,29 @@ void reserve(ParsedPolygons& parsed, const Header& h, std::size_t bytes_left) {
   parsed.soup.indices.reserve(std::min(3 * nf, bytes_left / 2));
 }
 
+// Refuses, before anything is reserved or read, a header whose element counts the data after it cannot
+// hold by far: a binary element needs at least the bytes of its scalars and list counts, an ASCII one a
+// character and a separator per value. A count past 16 times that room is a corrupt or hostile header; a file
+// merely cut short reads up to its end, where the error names the element. An element without properties
+// holds nothing and is skipped, whatever its count.
+void check_counts(const Header& h, std::size_t bytes_left, const std::string& name) {
+  constexpr std::uint64_t slack = 16;
+  std::uint64_t needed = 0;  // bytes (binary) or values (ASCII) of the elements so far
+  const std::uint64_t room = slack * (h.binary ? bytes_left : (std::uint64_t{bytes_left} + 1) / 2);
+  for (const Element& e : h.elements) {
+    std::uint64_t per_element = 0;
+    for (const Property& p : e.properties)
+      per_element += h.binary ? size_of(p.list ? p.count_type : p.type) : 1;
+    if (per_element != 0 && e.count > (room - needed) / per_element) {
+      throw IoError("element '" + e.name + "' declares " + std::to_string(e.count) +
+                        " entries, far more than the " + std::to_string(bytes_left) +
+                        " bytes after the header can hold",
+                    name, e.line);
+    }
+    needed += e.count * per_element;
+  }
+}
+
 void end_face(ParsedPolygons& parsed, std::size_t line) {
   parsed.soup.offsets.push_back(static_cast<std::uint32_t>(parsed.soup.indices.size()));
   parsed.face_lines.push_back(line);
@@ -238,6 +261,7 @@ void read_ascii(LineScanner& s, const Header& h, ParsedPolygons& parsed) {
   PolygonSoup& soup = parsed.soup;
   const std::size_t nv = h.num_vertices;
   for (const Element& e : h.elements) {
+    if (e.properties.empty()) continue;  // nothing to read, however many it declares
     for (std::size_t i = 0; i < e.count; ++i) {
       // Values are blank-separated and may span lines; each element usually sits on a line of its own.
       auto need = [&] {
@@ -246,7 +270,6 @@ void read_ascii(LineScanner& s, const Header& h, ParsedPolygons& parsed) {
             s.fail("the file ends in " + element_at(e, i) + " of " + std::to_string(e.count));
         }
       };
-      if (e.properties.empty()) continue;
       need();
       const std::size_t line = s.line();
       glm::dvec3 position(0.0);
@@ -305,6 +328,7 @@ void read_binary(std::string_view data, const Header& h, ParsedPolygons& parsed,
   const auto* const end = p + data.size();
   auto left = [&] { return static_cast<std::size_t>(end - p); };
   for (const Element& e : h.elements) {
+    if (e.properties.empty()) continue;  // nothing to read, however many it declares
     for (std::size_t i = 0; i < e.count; ++i) {
       auto fail = [&](const std::string& what) { throw IoError(element_at(e, i) + ": " + what, name, 0); };
       const char* const truncated = "the file ends early";
@@ -364,6 +388,7 @@ ParsedPolygons parse_ply_text(std::string_view text, const std::string& name) {
   ParsedPolygons parsed;
   LineScanner s(text, name, false);
   const Header header = parse_header(s, name);
+  check_counts(header, text.size() - s.next_offset(), name);
   if (header.binary) {
     read_binary(text.substr(s.next_offset()), header, parsed, name);
   } else {

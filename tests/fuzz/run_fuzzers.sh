@@ -1,0 +1,67 @@
+#!/usr/bin/env bash
+# Builds the libFuzzer harnesses (in build-fuzz, configured if needed) and runs each for SECONDS (default 30)
+# on its seed corpus and regression inputs, with a fresh output corpus outside the repository. Prints each
+# harness's executions (libFuzzer's final stat::number_of_executed_units, -print_final_stats=1) and fails if
+# any harness finds something.
+#
+#   tests/fuzz/run_fuzzers.sh [SECONDS] [HARNESS ...]
+#
+# Environment: DLFL_FUZZ_BUILD (build folder, default build-fuzz), DLFL_FUZZ_OUT (output folder, default a
+# new mktemp -d). New inputs are left in OUT/NAME/ for merging by hand (docs/fuzzing.md); a finding leaves
+# OUT/NAME-crash-..., -timeout-..., -oom-... and the log OUT/NAME.log.
+set -euo pipefail
+cd "$(dirname "$0")/../.."
+seconds=${1:-30}
+shift || true
+build=${DLFL_FUZZ_BUILD:-build-fuzz}
+if [ ! -f "$build/CMakeCache.txt" ]; then
+  cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 -DDLFL_FUZZ=ON -DDLFL_SANITIZE=address,undefined \
+    -DDLFL_BUILD_TESTS=OFF -DDLFL_BUILD_TOOLS=OFF -DDLFL_BUILD_BENCH=OFF
+fi
+cmake --build "$build" -j2
+out=${DLFL_FUZZ_OUT:-$(mktemp -d "${TMPDIR:-/tmp}/dlfl-fuzz.XXXXXX")}
+mkdir -p "$out"
+if [ $# -gt 0 ]; then
+  harnesses="$*"
+else
+  harnesses=$(cd tests/fuzz && ls -- *.cpp | sed 's/\.cpp$//')
+fi
+
+# The largest input of each harness (the harness itself skips longer ones; docs/fuzzing.md, "Caps").
+max_len() {
+  case $1 in
+    oplog) echo 16384 ;;
+    scheme_params | edit_op) echo 4096 ;;
+    mhp_pattern) echo 1024 ;;
+    *) echo 65536 ;;
+  esac
+}
+
+failed=""
+printf '%-14s %12s %8s\n' harness executions seconds
+for h in $harnesses; do
+  rm -rf "${out:?}/$h"
+  mkdir -p "$out/$h"
+  inputs=("$out/$h" "tests/fuzz/corpus/$h")  # the first folder receives the new inputs
+  [ -d "tests/fuzz/regressions/$h" ] && inputs+=("tests/fuzz/regressions/$h")
+  options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="$(max_len "$h")"
+           -print_final_stats=1 -artifact_prefix="$out/$h-")
+  [ -f "tests/fuzz/$h.dict" ] && options+=(-dict="tests/fuzz/$h.dict")
+  start=$(date +%s)
+  status=0
+  "$build/bin/dlfl_fuzz_$h" "${options[@]}" "${inputs[@]}" >"$out/$h.log" 2>&1 || status=$?
+  executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/$h.log" | tail -1)
+  printf '%-14s %12s %8s' "$h" "${executions:-?}" "$(($(date +%s) - start))"
+  if [ $status -ne 0 ]; then
+    failed="$failed $h"
+    printf '  FAILED (exit %s): see %s\n' "$status" "$out/$h.log"
+    grep -E 'ERROR|SUMMARY|dlfl fuzz finding|Test unit written' "$out/$h.log" | head -5 || true
+  else
+    printf '\n'
+  fi
+done
+echo "output corpus and logs: $out"
+if [ -n "$failed" ]; then
+  echo "fuzzing found something in:$failed"
+  exit 1
+fi
