@@ -149,7 +149,7 @@ TEST_CASE("transactions: a composite operation that fails part-way leaves the me
         tx.set_position(v, glm::dvec3(1, 2, 3));
         tx.create_face_manifold(std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {0, 1, 0}});
         CHECK(tx.size() == 3 + 6);  // the face manifold records its 3 vertices and 3 edges
-        tx.insert_edge(c, c);  // a self-loop: TopologyError, and the destructor reverts the rest
+        tx.insert_edge(c, c);       // a self-loop: TopologyError, and the destructor reverts the rest
       }(),
       TopologyError);
   CHECK(m == before);

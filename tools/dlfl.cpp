@@ -6,8 +6,8 @@
 #include <map>
 #include <new>
 
-#include "commands.h"
 #include <dlfl/errors.h>
+#include "commands.h"
 
 int main(int argc, char** argv) {
   using namespace dlfl::tool;

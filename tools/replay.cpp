@@ -2,9 +2,9 @@
 
 #include <string>
 
-#include "commands.h"
-#include <dlfl/io/mesh_io.h>
 #include <dlfl/history/oplog.h>
+#include <dlfl/io/mesh_io.h>
+#include "commands.h"
 
 namespace dlfl::tool {
 

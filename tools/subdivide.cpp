@@ -4,15 +4,15 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/cells/cell_io.h>
 #include <dlfl/cells/mlca_subdivide.h>
-#include "commands.h"
 #include <dlfl/errors.h>
 #include <dlfl/history/editor.h>
-#include <dlfl/cells/cell_io.h>
-#include <dlfl/io/mesh_io.h>
 #include <dlfl/history/oplog.h>
+#include <dlfl/io/mesh_io.h>
 #include <dlfl/parameters.h>
 #include <dlfl/schemes/scheme_registry.h>
+#include "commands.h"
 
 namespace dlfl::tool {
 

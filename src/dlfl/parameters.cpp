@@ -555,7 +555,8 @@ template <class H>
 void require_alive(std::string_view context, const ParamSpec& spec, const Mesh& mesh, std::int64_t i) {
   const H h(static_cast<std::uint32_t>(i));
   if (!mesh.is_alive(h)) {
-    bad(context, spec, "= " + std::to_string(i) + ": " + to_string(h) + " does not exist (removed or never created)");
+    bad(context, spec,
+        "= " + std::to_string(i) + ": " + to_string(h) + " does not exist (removed or never created)");
   }
 }
 

@@ -29,7 +29,8 @@ void ChangeRecord::revert(Mesh& mesh) {
   // Each inverse applied returns its own inverse; in the order applied they redo the changes.
   std::vector<Change> opposite;
   opposite.reserve(inverses_.size());
-  for (auto it = inverses_.rbegin(); it != inverses_.rend(); ++it) opposite.push_back(std::visit(Reverter{mesh}, *it));
+  for (auto it = inverses_.rbegin(); it != inverses_.rend(); ++it)
+    opposite.push_back(std::visit(Reverter{mesh}, *it));
   inverses_ = std::move(opposite);
 }
 
@@ -121,7 +122,8 @@ FaceManifold Transaction::create_face_manifold(std::span<const glm::dvec3> posit
 
 void Transaction::apply(const Step& step) { record_.inverses_.push_back(mesh_.apply(step)); }
 
-void Transaction::add_attribute(ElementKind kind, std::string_view name, const AttributeValue& default_value) {
+void Transaction::add_attribute(ElementKind kind, std::string_view name,
+                                const AttributeValue& default_value) {
   if (mesh_.has_attribute(kind, name)) {
     mesh_.add_attribute(kind, name, default_value);  // throws for another type, else does nothing
     return;

@@ -93,7 +93,8 @@ class Transaction {
   /// InvalidArgument if it exists with another type.
   void add_attribute(ElementKind kind, std::string_view name, const AttributeValue& default_value);
   /// Writes one value of an existing named attribute (see `Mesh::set_attribute_value`).
-  void set_attribute(ElementKind kind, std::string_view name, std::uint32_t index, const AttributeValue& value);
+  void set_attribute(ElementKind kind, std::string_view name, std::uint32_t index,
+                     const AttributeValue& value);
 
   /// Number of changes recorded so far.
   std::size_t size() const { return record_.size(); }
