@@ -193,7 +193,7 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
       edge_of[q + 1] = in.corner(m.corner(EdgeId(e), 1).index());
       edge_of[q + 3] = in.corner(m.corner(EdgeId(e), 0).index());
     }
-    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+    detail::set_edge_origins(*origins, result, edge_of);
   }
   return result;
 }

@@ -89,7 +89,7 @@ Mesh detail::dual(const Mesh& input, Origins* origins, std::vector<Origin>* corn
       // The corner for c crosses edge(prev(c)) (see the twins above).
       std::vector<Origin> edge_of(nc);
       for (std::uint32_t k = 0; k < nc; ++k) edge_of[vslot[k]] = in.edge(m.edge(m.prev(CornerId(k))).index());
-      detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+      detail::set_edge_origins(*origins, result, edge_of);
     }
   }
   return result;

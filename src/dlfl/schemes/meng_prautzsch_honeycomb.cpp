@@ -145,7 +145,7 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
     for (std::uint32_t k = 0; k < nc; ++k) origins->vertices[nv + k] = in.corner(k);
     for (std::uint32_t f = 0; f < nf; ++f) origins->faces[f] = in.face(f);
     for (std::uint32_t e = 0; e < ne; ++e) origins->faces[nf + e] = in.edge(e);
-    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+    detail::set_edge_origins(*origins, result, edge_of);
   }
   if (corners) *corners = std::move(corner_of);
   return result;
@@ -154,7 +154,7 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
 namespace detail {
 
 SchemeSpec mp_honeycomb_scheme() {
-  return mp_step_scheme(
+  return mp_step_scheme<MpHoneycombParams>(
       "mp-honeycomb",
       "Meng-Prautzsch honeycomb H: convexity-preserving refinement of convex polyhedra by cutting planes",
       "where each f-face lies between its old face (0) and the vertex v_F of the region over it (1)",

@@ -109,7 +109,7 @@ Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origin
       edge_of[triangle(c) + 1] = in.corner(i);
       edge_of[triangle(c) + 2] = in.edge(m.edge(m.prev(c)).index());
     }
-    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+    detail::set_edge_origins(*origins, result, edge_of);
   }
   return result;
 }
@@ -117,7 +117,7 @@ Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origin
 namespace detail {
 
 SchemeSpec mp_pushing_scheme() {
-  return mp_step_scheme(
+  return mp_step_scheme<MpPushingParams>(
       "mp-pushing",
       "Meng-Prautzsch corner pushing P: cut every corner off, push the old vertices towards the centre",
       "how far each old vertex moves towards the centre, as a fraction of the way to its extreme position",
