@@ -155,10 +155,10 @@ namespace detail {
 
 SchemeSpec mp_honeycomb_scheme() {
   return mp_step_scheme<MpHoneycombParams>(
-      "mp-honeycomb",
+      dlfl::mp_honeycomb, "mp-honeycomb",
       "Meng-Prautzsch honeycomb H: convexity-preserving refinement of convex polyhedra by cutting planes",
       "where each f-face lies between its old face (0) and the vertex v_F of the region over it (1)",
-      "how each edge plane divides the edge's exterior angle, ratio : 1 (1 bisects)", dlfl::mp_honeycomb);
+      "how each edge plane divides the edge's exterior angle, ratio : 1 (1 bisects)");
 }
 
 }  // namespace detail

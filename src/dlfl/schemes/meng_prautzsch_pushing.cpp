@@ -118,11 +118,10 @@ namespace detail {
 
 SchemeSpec mp_pushing_scheme() {
   return mp_step_scheme<MpPushingParams>(
-      "mp-pushing",
+      dlfl::mp_pushing, "mp-pushing",
       "Meng-Prautzsch corner pushing P: cut every corner off, push the old vertices towards the centre",
       "how far each old vertex moves towards the centre, as a fraction of the way to its extreme position",
-      "where each edge's new point divides it: |from(e) m| : |m to(e)| = ratio : 1 (1: the midpoint)",
-      dlfl::mp_pushing);
+      "where each edge's new point divides it: |from(e) m| : |m to(e)| = ratio : 1 (1: the midpoint)");
 }
 
 }  // namespace detail

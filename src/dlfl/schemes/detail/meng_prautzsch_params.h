@@ -35,8 +35,8 @@ MpStepParams mp_step_params_from(const Params& resolved, const char* tau, const 
 /// The declaration of H or P: tau and ratio, then the shared parameters; `step` (`mp_honeycomb` or
 /// `mp_pushing`) runs on them.
 template <class StepParams>
-SchemeSpec mp_step_scheme(std::string name, std::string doc, std::string tau_doc, std::string ratio_doc,
-                          Mesh (*step)(const Mesh&, const StepParams&, Origins*)) {
+SchemeSpec mp_step_scheme(Mesh (*step)(const Mesh&, const StepParams&, Origins*), std::string name,
+                          std::string doc, std::string tau_doc, std::string ratio_doc) {
   SchemeSpec spec;
   spec.name = std::move(name);
   spec.doc = std::move(doc);
