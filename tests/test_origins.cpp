@@ -490,12 +490,8 @@ void check_loop(const Mesh& in) {
                  0.125 * (in.position(in.vertex(in.prev(s0))) + in.position(in.vertex(in.prev(s1))));
     } else {
       const VertexId v = src.vertex();
-      const double n = in.valence(v);
-      const double c = 3.0 / 8.0 + std::cos(2.0 * std::numbers::pi / n) / 4.0;
-      const double beta = (5.0 / 8.0 - c * c) / n;
-      glm::dvec3 ring(0.0);
-      for (CornerId x : in.corners(v)) ring += in.position(in.vertex(in.next(x)));
-      expected = (1 - n * beta) * in.position(v) + beta * ring;
+      const double n = in.valence(v), beta = test::loop_beta(n);
+      expected = (1 - n * beta) * in.position(v) + beta * test::neighbour_sum(in, v);
     }
     CHECK(close(out.position(w), expected, 1e-12));
   }
@@ -527,11 +523,8 @@ void check_sqrt3(const Mesh& in) {
       expected = centroid_of(in, src.face());
     } else {
       const VertexId v = src.vertex();
-      const double n = in.valence(v);
-      const double a = (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0;
-      glm::dvec3 ring(0.0);
-      for (CornerId x : in.corners(v)) ring += in.position(in.vertex(in.next(x)));
-      expected = (1 - a) * in.position(v) + a / n * ring;
+      const double n = in.valence(v), a = test::kobbelt_a(n);
+      expected = (1 - a) * in.position(v) + a / n * test::neighbour_sum(in, v);
     }
     CHECK(close(out.position(w), expected, 1e-12));
   }
