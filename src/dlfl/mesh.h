@@ -550,6 +550,23 @@ class Mesh {
     corners_[a.index()].next = b;
     corners_[b.index()].prev = a;
   }
+  // Moves the corner cycle from `start` into face g, as a split does, telling whether it passed the corners
+  // `f_anchor` and `g_anchor` (the first corners of the faces, which may have to move).
+  struct MovedCycle {
+    bool passed_f_anchor = false;
+    bool passed_g_anchor = false;
+  };
+  MovedCycle move_cycle(CornerId start, FaceId g, CornerId f_anchor, CornerId g_anchor) {
+    MovedCycle moved;
+    CornerId c = start;
+    do {
+      corners_[c.index()].face = g;
+      moved.passed_f_anchor |= c == f_anchor;
+      moved.passed_g_anchor |= c == g_anchor;
+      c = next(c);
+    } while (c != start);
+    return moved;
+  }
   // The live hole faces, counted from scratch: for the builders that write the arrays directly.
   std::size_t count_hole_faces() const;
 
