@@ -51,15 +51,6 @@ struct CubeWithTombstones {
   }
 };
 
-std::string message_of(const auto& call) {
-  try {
-    call();
-  } catch (const InvalidArgument& e) {
-    return e.what();
-  }
-  return "(no exception)";
-}
-
 }  // namespace
 
 TEST_CASE("attributes: typed access, lookup, errors") {
@@ -92,11 +83,13 @@ TEST_CASE("attributes: typed access, lookup, errors") {
   CHECK_FALSE(m.find_attribute<FaceId, glm::dvec3>("missing").has_value());
 
   // Errors name the attribute and the types.
-  const std::string wrong_type = message_of([&] { m.vertex_attribute<int>("weight"); });
+  const std::string wrong_type =
+      test::error_message<InvalidArgument>([&] { m.vertex_attribute<int>("weight"); });
   CHECK(wrong_type.find("'weight'") != std::string::npos);
   CHECK(wrong_type.find("number") != std::string::npos);
   CHECK(wrong_type.find("integer") != std::string::npos);
-  const std::string missing = message_of([&] { m.face_attribute<double>("weight"); });
+  const std::string missing =
+      test::error_message<InvalidArgument>([&] { m.face_attribute<double>("weight"); });
   CHECK(missing.find("face attribute 'weight'") != std::string::npos);
   CHECK(missing.find("number") != std::string::npos);
   CHECK_THROWS_AS(m.add_vertex_attribute<int>("weight"), InvalidArgument);

@@ -27,6 +27,17 @@ inline void require_valid(const Mesh& mesh) {
   REQUIRE(r.valid());
 }
 
+/// The message of the exception of type E that a call throws (empty if it throws none).
+template <class E, class F>
+std::string error_message(F&& f) {
+  try {
+    f();
+  } catch (const E& e) {
+    return e.what();
+  }
+  return {};
+}
+
 /// The scratch folder of this test process, created on first use and left for the next test case of the
 /// process: CTest runs test cases as processes in parallel, and each gets its own folder.
 inline std::filesystem::path scratch_dir() {

@@ -19,6 +19,7 @@
 #include <dlfl/schemes/honeycomb.h>
 #include <dlfl/statistics.h>
 #include <dlfl/validate.h>
+#include "honeycomb_checks.h"
 #include "scheme_meshes.h"
 #include "test_helpers.h"
 #include "test_meshes.h"
@@ -28,25 +29,9 @@ using test::require_valid;
 
 namespace {
 
-using Histogram = std::map<std::uint32_t, std::size_t>;
-
-// (Euler characteristic, genus, holes) of every component, sorted: component order may change.
-std::vector<std::tuple<long, long, std::size_t>> topology(const Mesh& m) {
-  std::vector<std::tuple<long, long, std::size_t>> t;
-  for (const ComponentInfo& c : validate(m).components)
-    t.emplace_back(c.euler_characteristic, c.genus, c.holes);
-  std::sort(t.begin(), t.end());
-  return t;
-}
-
-std::vector<std::uint32_t> hole_sizes(const Mesh& m) {
-  std::vector<std::uint32_t> s;
-  for (FaceId f : m.faces()) {
-    if (m.is_hole(f)) s.push_back(m.size(f));
-  }
-  std::sort(s.begin(), s.end());
-  return s;
-}
+using test::Histogram;
+using test::hole_sizes;
+using test::topology;
 
 std::size_t non_hexagons(const Mesh& m) {
   std::size_t n = 0;
@@ -54,29 +39,9 @@ std::size_t non_hexagons(const Mesh& m) {
   return n;
 }
 
-// One step on a mesh without point spheres, checked against the closed forms of section 2 (remark 2): each
-// old edge gives 2 vertices and 3 edges, each old face a front face of its size, each old vertex a face of
-// twice its valence; every new vertex has valence 3; the topology of every component is kept.
+// One step on a mesh without point spheres, checked against the closed forms.
 Mesh checked_step(const Mesh& m, const HoneycombParams& p = {}) {
-  const Mesh copy = m;
-  Mesh r = honeycomb(m, p);
-  CHECK(m == copy);
-  require_valid(r);
-  const std::size_t V = m.num_vertices(), E = m.num_edges(), F = m.num_faces();
-  CHECK(r.num_vertices() == 2 * E);
-  CHECK(r.num_edges() == 3 * E);
-  CHECK(r.num_faces() == F + V);
-  const MeshStatistics s = statistics(r);
-  CHECK(s.valences == Histogram{{3, 2 * E}});
-  Histogram expected;
-  for (FaceId f : m.faces()) {
-    if (!m.is_hole(f)) ++expected[m.size(f)];
-  }
-  for (VertexId v : m.vertices()) ++expected[2 * m.valence(v)];
-  CHECK(s.face_sizes == expected);
-  CHECK(hole_sizes(r) == hole_sizes(m));
-  CHECK(topology(r) == topology(m));
-  return r;
+  return test::checked_honeycomb_step(m, [&](const Mesh& in) { return honeycomb(in, p); });
 }
 
 Mesh face_manifold(const std::vector<glm::dvec3>& points) {

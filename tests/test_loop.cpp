@@ -17,39 +17,14 @@ using namespace dlfl::test;
 
 namespace {
 
-// V' = V + E, E' = 2E + 3F (halves of old edges plus three inner edges per triangle), F' = 4F triangles;
-// old vertices keep their valence, edge points have 6.
-// `solid`: the input encloses a positive volume, and so must the output (orientation kept).
+// E new vertices (the edge points), E' = 2E + 3F (halves of old edges plus three inner edges per triangle),
+// F' = 4F triangles; old vertices keep their valence, edge points have 6.
 void check_counts(const Mesh& in, bool solid = true) {
-  const Mesh copy = in;
-  const Mesh out = loop(in);
-  CHECK(in == copy);
-  check_valid_same_genus(in, out);
-  const std::size_t V = in.num_vertices(), E = in.num_edges(), F = in.num_faces();
-  CHECK(out.num_vertices() == V + E);
-  CHECK(out.num_edges() == 2 * E + 3 * F);
-  CHECK(out.num_faces() == 4 * F);
-  CHECK(face_size_histogram(out) == std::map<std::uint32_t, std::size_t>{{3, 4 * F}});
-  std::uint32_t k = 0;
-  for (VertexId v : in.vertices()) CHECK(out.valence(VertexId(k++)) == in.valence(v));
-  for (; k < V + E; ++k) CHECK(out.valence(VertexId(k)) == 6);
-  if (solid) CHECK(signed_volume(out) > 0);
-}
-
-// The rules as published, evaluated from the input's navigation.
-double beta(std::size_t n) {
-  const double c = 3.0 / 8.0 + std::cos(2.0 * std::numbers::pi / double(n)) / 4.0;
-  return (5.0 / 8.0 - c * c) / double(n);
+  const std::size_t E = in.num_edges(), F = in.num_faces();
+  check_triangle_step(in, loop, {E, 2 * E + 3 * F, 4 * F}, solid);
 }
 
 }  // namespace
-
-TEST_CASE("loop: counts, valences and genus on triangle meshes of several genera") {
-  for (const PolygonSoup& soup : closed_triangle_soups()) {
-    CAPTURE(soup.num_faces());
-    check_counts(build_mesh(soup));
-  }
-}
 
 TEST_CASE("loop: the tetrahedron and the octahedron by hand") {
   {
@@ -80,21 +55,12 @@ TEST_CASE("loop: the tetrahedron and the octahedron by hand") {
 }
 
 TEST_CASE("loop: the published rules and the documented output order on an irregular mesh") {
-  PolygonSoup soup = triangulated(genus_soup(1));
-  for (std::size_t i = 0; i < soup.positions.size(); ++i) {
-    soup.positions[i] += 0.1 * glm::dvec3(std::sin(7.0 * i), std::cos(3.0 * i), std::sin(5.0 * i + 1));
-  }
-  const Mesh in = build_mesh(soup);
+  const Mesh in = irregular_torus();
   const Mesh out = loop(in);
   const std::uint32_t V = in.num_vertices(), C = in.num_corners();
   for (VertexId v : in.vertices()) {
-    glm::dvec3 sum(0.0);
-    std::size_t n = 0;
-    for (CornerId c : in.corners(v)) {
-      sum += in.position(in.vertex(in.next(c)));
-      ++n;
-    }
-    CHECK(close(out.position(v), (1.0 - n * beta(n)) * in.position(v) + beta(n) * sum));
+    const double n = in.valence(v), beta = loop_beta(n);
+    CHECK(close(out.position(v), (1.0 - n * beta) * in.position(v) + beta * neighbour_sum(in, v)));
   }
   for (EdgeId e : in.edges()) {
     const CornerId c0 = in.corner(e, 0), c1 = in.corner(e, 1);
@@ -117,6 +83,10 @@ TEST_CASE("loop: the published rules and the documented output order on an irreg
                                      VertexId(V + in.edge(in.next(c0)).index()),
                                      VertexId(V + in.edge(in.prev(c0)).index())});
   }
+}
+
+TEST_CASE("loop: counts, valences and genus on triangle meshes of several genera") {
+  for (const PolygonSoup& soup : closed_triangle_soups()) check_counts(build_mesh(soup));
 }
 
 TEST_CASE("loop: affine invariance") {
@@ -191,11 +161,7 @@ TEST_CASE("loop: the two-triangle pillow (valence 2) by hand, and the empty mesh
   // of an edge have the same third vertex. n = 2: cos(pi) = -1, beta = (5/8 - (1/8)^2) / 2 = 39/128, so a
   // vertex moves to 25/64 S + 39/128 (sum of its two neighbours); the edge point of ab is 3/8 (a + b) + 1/4
   // c.
-  PolygonSoup pillow;
-  pillow.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  pillow.add_face({0, 1, 2});
-  pillow.add_face({0, 2, 1});
-  const Mesh in = build_mesh(pillow);
+  const Mesh in = build_mesh(pillow_soup());
   check_counts(in, false);
   const Mesh out = loop(in);
   for (VertexId v : in.vertices()) {

@@ -10,19 +10,15 @@
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/validate.h>
+#include "test_helpers.h"
 
 using namespace dlfl;
 
 namespace {
 // The message of the InvalidArgument that `f` throws, or "" if it throws none.
 template <class F>
-std::string refusal(F f) {
-  try {
-    f();
-  } catch (const InvalidArgument& e) {
-    return e.what();
-  }
-  return "";
+std::string refusal(F&& f) {
+  return test::error_message<InvalidArgument>(std::forward<F>(f));
 }
 }  // namespace
 

@@ -243,6 +243,52 @@ void check_tombstones_renamed(const PolygonSoup& soup, const Scheme& scheme) {
   }
 }
 
+// One step with origins: the same mesh as the step without them, with a well-formed table.
+Mesh checked_step(const Mesh& in, const Scheme& scheme, Origins& o) {
+  Mesh out = scheme(in, &o);
+  CHECK(out == scheme(in, nullptr));
+  check_well_formed(in, out, o);
+  return out;
+}
+
+// The same for a scheme with parameters.
+template <class Params>
+Mesh checked_step(const Mesh& in, Mesh (*scheme)(const Mesh&, const Params&, Origins*), const Params& params,
+                  Origins& o) {
+  return checked_step(
+      in, [&](const Mesh& m, Origins* origins) { return scheme(m, params, origins); }, o);
+}
+
+// An output edge from input edge `old`, one half of it: between an end of `old` and `old`'s own point.
+bool is_half_of(const Mesh& in, const std::vector<Origin>& ends, EdgeId old) {
+  return same_set(ends, {origin_of(in.from(old)), origin_of(old)}) ||
+         same_set(ends, {origin_of(in.to(old)), origin_of(old)});
+}
+
+// Every output edge stems from an input edge, as a half of it, or from an input corner c, between the
+// points that `ends_of_corner(c)` names.
+template <class EndsOfCorner>
+void check_halves_and_corner_edges(const Mesh& in, const Mesh& out, const Origins& o,
+                                   const EndsOfCorner& ends_of_corner) {
+  for (EdgeId e : out.edges()) {
+    const Origin src = o.of(e);
+    const auto ends = edge_end_origins(out, o, e);
+    if (src.kind == Kind::edge) {
+      CHECK(is_half_of(in, ends, src.edge()));
+    } else {
+      CHECK(same_set(ends, ends_of_corner(src.corner())));
+    }
+  }
+}
+
+// The parameters of an H or P step with the given tau.
+template <class StepParams>
+StepParams step_params(double tau) {
+  StepParams p;
+  p.tau = tau;
+  return p;
+}
+
 // Closed-form sizes of the input.
 struct Sizes {
   std::size_t V, E, F, C;
@@ -254,9 +300,7 @@ Sizes sizes(const Mesh& m) { return {m.num_vertices(), m.num_edges(), m.num_face
 
 void check_catmull_clark(const Mesh& in) {
   Origins o;
-  const Mesh out = catmull_clark(in, &o);
-  CHECK(out == catmull_clark(in));
-  check_well_formed(in, out, o);
+  const Mesh out = checked_step(in, catmull_clark, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, E, F, 0}, {0, 2 * E, 0, C}, {0, 0, 0, C});
   // Positions: face points at centroids, edge points (a + b + F0 + F1) / 4, vertex points (Q + 2R + (n-3)S) /
@@ -292,17 +336,9 @@ void check_catmull_clark(const Mesh& in) {
                                                                 origin_of(in.edge(in.prev(c)))});
     CHECK(out.is_hole(f) == in.is_hole(in.face(c)));
   }
-  for (EdgeId e : out.edges()) {
-    const Origin src = o.of(e);
-    const auto ends = edge_end_origins(out, o, e);
-    if (src.kind == Kind::edge) {
-      const EdgeId old = src.edge();
-      CHECK((same_set(ends, {origin_of(in.from(old)), src}) || same_set(ends, {origin_of(in.to(old)), src})));
-    } else {
-      const CornerId c = src.corner();
-      CHECK(same_set(ends, {origin_of(in.edge(c)), origin_of(in.face(c))}));
-    }
-  }
+  check_halves_and_corner_edges(in, out, o, [&](CornerId c) {
+    return std::vector<Origin>{origin_of(in.edge(c)), origin_of(in.face(c))};
+  });
 }
 
 // The Doo-Sabin point of corner c, from the paper's weights.
@@ -320,9 +356,7 @@ glm::dvec3 doo_sabin_point(const Mesh& in, CornerId c) {
 
 void check_doo_sabin(const Mesh& in) {
   Origins o;
-  const Mesh out = doo_sabin(in, &o);
-  CHECK(out == doo_sabin(in));
-  check_well_formed(in, out, o);
+  const Mesh out = checked_step(in, doo_sabin, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {0, 0, 0, C}, {0, C, 0, C}, {V, E, F, 0});
   for (VertexId w : out.vertices())
@@ -444,9 +478,7 @@ void check_honeycomb(const Mesh& in) {
 
 void check_loop(const Mesh& in) {
   Origins o;
-  const Mesh out = loop(in, &o);
-  CHECK(out == loop(in));
-  check_well_formed(in, out, o);
+  const Mesh out = checked_step(in, loop, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, E, 0, 0}, {0, 2 * E, 0, C}, {0, 0, F, C});
   for (VertexId w : out.vertices()) {
@@ -458,12 +490,8 @@ void check_loop(const Mesh& in) {
                  0.125 * (in.position(in.vertex(in.prev(s0))) + in.position(in.vertex(in.prev(s1))));
     } else {
       const VertexId v = src.vertex();
-      const double n = in.valence(v);
-      const double c = 3.0 / 8.0 + std::cos(2.0 * std::numbers::pi / n) / 4.0;
-      const double beta = (5.0 / 8.0 - c * c) / n;
-      glm::dvec3 ring(0.0);
-      for (CornerId x : in.corners(v)) ring += in.position(in.vertex(in.next(x)));
-      expected = (1 - n * beta) * in.position(v) + beta * ring;
+      const double n = in.valence(v), beta = test::loop_beta(n);
+      expected = (1 - n * beta) * in.position(v) + beta * test::neighbour_sum(in, v);
     }
     CHECK(close(out.position(w), expected, 1e-12));
   }
@@ -478,24 +506,14 @@ void check_loop(const Mesh& in) {
     }
     CHECK(face_vertex_origins(out, o, f) == expected);
   }
-  for (EdgeId e : out.edges()) {
-    const Origin src = o.of(e);
-    const auto ends = edge_end_origins(out, o, e);
-    if (src.kind == Kind::edge) {
-      const EdgeId old = src.edge();
-      CHECK((same_set(ends, {origin_of(in.from(old)), src}) || same_set(ends, {origin_of(in.to(old)), src})));
-    } else {
-      const CornerId c = src.corner();
-      CHECK(same_set(ends, {origin_of(in.edge(c)), origin_of(in.edge(in.prev(c)))}));
-    }
-  }
+  check_halves_and_corner_edges(in, out, o, [&](CornerId c) {  // cuts off c
+    return std::vector<Origin>{origin_of(in.edge(c)), origin_of(in.edge(in.prev(c)))};
+  });
 }
 
 void check_sqrt3(const Mesh& in) {
   Origins o;
-  const Mesh out = sqrt3(in, &o);
-  CHECK(out == sqrt3(in));
-  check_well_formed(in, out, o);
+  const Mesh out = checked_step(in, sqrt3, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, 0, F, 0}, {0, E, 0, C}, {0, 0, 0, C});
   for (VertexId w : out.vertices()) {
@@ -505,11 +523,8 @@ void check_sqrt3(const Mesh& in) {
       expected = centroid_of(in, src.face());
     } else {
       const VertexId v = src.vertex();
-      const double n = in.valence(v);
-      const double a = (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0;
-      glm::dvec3 ring(0.0);
-      for (CornerId x : in.corners(v)) ring += in.position(in.vertex(in.next(x)));
-      expected = (1 - a) * in.position(v) + a / n * ring;
+      const double n = in.valence(v), a = test::kobbelt_a(n);
+      expected = (1 - a) * in.position(v) + a / n * test::neighbour_sum(in, v);
     }
     CHECK(close(out.position(w), expected, 1e-12));
   }
@@ -533,9 +548,7 @@ void check_sqrt3(const Mesh& in) {
 
 void check_dual(const Mesh& in) {
   Origins o;
-  const Mesh out = dual(in, &o);
-  CHECK(out == dual(in));
-  check_well_formed(in, out, o);
+  const Mesh out = checked_step(in, dual, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {0, 0, F, 0}, {0, E, 0, 0}, {V, 0, 0, 0});
   for (VertexId w : out.vertices()) CHECK(close(out.position(w), centroid_of(in, o.of(w).face()), 1e-12));
@@ -551,12 +564,8 @@ void check_dual(const Mesh& in) {
 }
 
 void check_dual_honeycomb_dual(const Mesh& in) {
-  HoneycombParams p;
-  p.a = 0.6;
   Origins o;
-  const Mesh out = dual_honeycomb_dual(in, p, &o);
-  CHECK(out == dual_honeycomb_dual(in, p));
-  check_well_formed(in, out, o);
+  const Mesh out = checked_step(in, dual_honeycomb_dual, HoneycombParams{.a = 0.6}, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, 0, F, 0}, {0, E, 0, C}, {0, 0, 0, C});
   for (VertexId w : out.vertices()) {
@@ -591,12 +600,8 @@ void check_dual_honeycomb_dual(const Mesh& in) {
 }
 
 void check_mp_honeycomb(const Mesh& in) {
-  MpHoneycombParams p;
-  p.tau = 0.4;
   Origins o;
-  const Mesh out = mp_honeycomb(in, p, &o);
-  CHECK(out == mp_honeycomb(in, p));
-  check_well_formed(in, out, o);
+  const Mesh out = checked_step(in, mp_honeycomb, step_params<MpHoneycombParams>(0.4), o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, 0, 0, C}, {0, 0, 0, 2 * C}, {0, E, F, 0});
   for (VertexId w : out.vertices()) {
@@ -636,12 +641,8 @@ void check_mp_honeycomb(const Mesh& in) {
 }
 
 void check_mp_pushing(const Mesh& in) {
-  MpPushingParams p;
-  p.tau = 0.4;
   Origins o;
-  const Mesh out = mp_pushing(in, p, &o);
-  CHECK(out == mp_pushing(in, p));
-  check_well_formed(in, out, o);
+  const Mesh out = checked_step(in, mp_pushing, step_params<MpPushingParams>(0.4), o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, E, 0, 0}, {0, 2 * E, 0, C}, {0, 0, F, C});
   const glm::dvec3 centre = vertex_centroid(in);
@@ -673,24 +674,15 @@ void check_mp_pushing(const Mesh& in) {
     }
     CHECK(face_vertex_origins(out, o, f) == expected);
   }
-  for (EdgeId e : out.edges()) {
-    const Origin src = o.of(e);
-    const auto ends = edge_end_origins(out, o, e);
-    if (src.kind == Kind::edge) {
-      const EdgeId old = src.edge();
-      CHECK((same_set(ends, {origin_of(in.from(old)), src}) || same_set(ends, {origin_of(in.to(old)), src})));
-    } else {  // cuts off corner x: between the points of the edges before and after it
-      const CornerId x = src.corner();
-      CHECK(same_set(ends, {origin_of(in.edge(in.prev(x))), origin_of(in.edge(x))}));
-    }
-  }
+  // The cut across corner c joins the points of the edges after and before it.
+  check_halves_and_corner_edges(in, out, o, [&](CornerId c) {
+    return std::vector<Origin>{origin_of(in.edge(c)), origin_of(in.edge(in.prev(c)))};
+  });
 }
 
 void check_mlca(const Mesh& in) {
   Origins o;
-  const Mesh out = mlca(in, &o);
-  CHECK(out == mlca(in));
-  check_well_formed(in, out, o);
+  const Mesh out = checked_step(in, mlca, o);
   const auto [V, E, F, C] = sizes(in);
   bool quads = true;
   for (FaceId f : in.faces()) quads = quads && (in.size(f) == 4 || in.is_hole(f));

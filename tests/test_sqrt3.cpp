@@ -18,36 +18,15 @@ using namespace dlfl::test;
 
 namespace {
 
-// V' = V + F, E' = 3E (every old edge flipped, three spokes per triangle: E + 3F = 3E as 3F = 2E),
-// F' = 3F triangles; old vertices keep their valence, face points have 6 (three corners, three flipped
-// edges).
-// `solid`: the input encloses a positive volume, and so must the output (orientation kept).
+// F new vertices (the face points), E' = 3E (every old edge flipped, three spokes per triangle: E + 3F = 3E
+// as 3F = 2E), F' = 3F triangles; old vertices keep their valence, face points have 6 (three corners, three
+// flipped edges).
 void check_counts(const Mesh& in, bool solid = true) {
-  const Mesh copy = in;
-  const Mesh out = sqrt3(in);
-  CHECK(in == copy);
-  check_valid_same_genus(in, out);
-  const std::size_t V = in.num_vertices(), E = in.num_edges(), F = in.num_faces();
-  CHECK(out.num_vertices() == V + F);
-  CHECK(out.num_edges() == 3 * E);
-  CHECK(out.num_faces() == 3 * F);
-  CHECK(face_size_histogram(out) == std::map<std::uint32_t, std::size_t>{{3, 3 * F}});
-  std::uint32_t k = 0;
-  for (VertexId v : in.vertices()) CHECK(out.valence(VertexId(k++)) == in.valence(v));
-  for (; k < V + F; ++k) CHECK(out.valence(VertexId(k)) == 6);
-  if (solid) CHECK(signed_volume(out) > 0);
+  const std::size_t E = in.num_edges(), F = in.num_faces();
+  check_triangle_step(in, sqrt3, {F, 3 * E, 3 * F}, solid);
 }
-
-double kobbelt_a(std::size_t n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / double(n))) / 9.0; }
 
 }  // namespace
-
-TEST_CASE("sqrt3: counts, valences and genus on triangle meshes of several genera") {
-  for (const PolygonSoup& soup : closed_triangle_soups()) {
-    CAPTURE(soup.num_faces());
-    check_counts(build_mesh(soup));
-  }
-}
 
 TEST_CASE("sqrt3: the tetrahedron and the octahedron by hand") {
   {
@@ -81,21 +60,12 @@ TEST_CASE("sqrt3: the tetrahedron and the octahedron by hand") {
 }
 
 TEST_CASE("sqrt3: the published rules, the edge flip and the documented output order on an irregular mesh") {
-  PolygonSoup soup = triangulated(genus_soup(1));
-  for (std::size_t i = 0; i < soup.positions.size(); ++i) {
-    soup.positions[i] += 0.1 * glm::dvec3(std::sin(7.0 * i), std::cos(3.0 * i), std::sin(5.0 * i + 1));
-  }
-  const Mesh in = build_mesh(soup);
+  const Mesh in = irregular_torus();
   const Mesh out = sqrt3(in);
   const std::uint32_t V = in.num_vertices();
   for (VertexId v : in.vertices()) {
-    glm::dvec3 sum(0.0);
-    std::size_t n = 0;
-    for (CornerId c : in.corners(v)) {
-      sum += in.position(in.vertex(in.next(c)));
-      ++n;
-    }
-    CHECK(close(out.position(v), (1.0 - kobbelt_a(n)) * in.position(v) + kobbelt_a(n) / double(n) * sum));
+    const double n = in.valence(v), a = kobbelt_a(n);
+    CHECK(close(out.position(v), (1.0 - a) * in.position(v) + a / n * neighbour_sum(in, v)));
   }
   for (FaceId f : in.faces()) CHECK(close(out.position(VertexId(V + f.index())), centroid(in, f)));
   // Triangle k is (vertex(k), face point across edge(k), face point of face(k)).
@@ -131,6 +101,10 @@ TEST_CASE("sqrt3: two steps refine every triangle into nine") {
     // V'' = V' + F' = (V + F) + 3F.
     CHECK(twice.num_vertices() == in.num_vertices() + 4 * in.num_faces());
   }
+}
+
+TEST_CASE("sqrt3: counts, valences and genus on triangle meshes of several genera") {
+  for (const PolygonSoup& soup : closed_triangle_soups()) check_counts(build_mesh(soup));
 }
 
 TEST_CASE("sqrt3: affine invariance") {
@@ -181,11 +155,7 @@ TEST_CASE("sqrt3: through the editor, its undo and the log") {
 TEST_CASE("sqrt3: the two-triangle pillow flips into three edges between its two face points") {
   // Every old edge of the pillow has the same two triangles on its sides, so all three flipped edges join the
   // same two face points: parallel edges, which the kernel holds.
-  PolygonSoup pillow;
-  pillow.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
-  pillow.add_face({0, 1, 2});
-  pillow.add_face({0, 2, 1});
-  const Mesh in = build_mesh(pillow);
+  const Mesh in = build_mesh(pillow_soup());
   check_counts(in, false);
   const Mesh out = sqrt3(in);
   std::size_t between_face_points = 0;

@@ -13,14 +13,15 @@
 #include <vector>
 
 #include <dlfl/build_mesh.h>
-#include <dlfl/mesh.h>
-#include <dlfl/polygon_soup.h>
-#include <dlfl/validate.h>
 #include <dlfl/history/editor.h>
 #include <dlfl/history/oplog.h>
-#include "scheme_meshes.h"
+#include <dlfl/mesh.h>
+#include <dlfl/polygon_soup.h>
 #include <dlfl/schemes/scheme_registry.h>
+#include <dlfl/validate.h>
 #include "log_helpers.h"
+#include "scheme_meshes.h"
+#include "test_helpers.h"
 #include "test_meshes.h"
 
 namespace dlfl::test {
@@ -107,6 +108,40 @@ inline std::vector<PolygonSoup> closed_polygon_soups() {
           disjoint_union(cube_soup(), torus_soup(5, 4), {10, 0, 0})};
 }
 
+/// Two triangles on the same three vertices, back to back (a pillow): every vertex 2-valent, and both
+/// triangles of an edge have the same third vertex.
+inline PolygonSoup pillow_soup() {
+  PolygonSoup pillow;
+  pillow.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  pillow.add_face({0, 1, 2});
+  pillow.add_face({0, 2, 1});
+  return pillow;
+}
+
+/// The triangulated torus of genus 1 with every vertex moved off its regular place, so that no rule holds
+/// by symmetry alone.
+inline Mesh irregular_torus() {
+  PolygonSoup soup = triangulated(genus_soup(1));
+  for (std::size_t i = 0; i < soup.positions.size(); ++i) {
+    soup.positions[i] += 0.1 * glm::dvec3(std::sin(7.0 * i), std::cos(3.0 * i), std::sin(5.0 * i + 1));
+  }
+  return build_mesh(soup);
+}
+
+/// The vertex weights of the triangle schemes for valence n, as published: Loop's beta and Kobbelt's a_n.
+inline double loop_beta(double n) {
+  const double c = 3.0 / 8.0 + std::cos(2.0 * std::numbers::pi / n) / 4.0;
+  return (5.0 / 8.0 - c * c) / n;
+}
+inline double kobbelt_a(double n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; }
+
+/// The sum of the neighbours of v across its edges, which the vertex rules of Loop and sqrt(3) weigh.
+inline glm::dvec3 neighbour_sum(const Mesh& m, VertexId v) {
+  glm::dvec3 sum(0.0);
+  for (CornerId c : m.corners(v)) sum += m.position(m.vertex(m.next(c)));
+  return sum;
+}
+
 inline bool close(const glm::dvec3& a, const glm::dvec3& b, double tol = 1e-12) {
   return std::abs(a.x - b.x) <= tol && std::abs(a.y - b.y) <= tol && std::abs(a.z - b.z) <= tol;
 }
@@ -169,6 +204,33 @@ inline void check_valid_same_genus(const Mesh& in, const Mesh& out) {
   }
 }
 
+/// What one step of a triangle scheme adds: new vertices, and the edges and faces of the result.
+struct TriangleStepCounts {
+  std::size_t new_vertices, edges, faces;
+};
+
+/// One step of a triangle scheme (Loop, sqrt(3)) against its closed forms: the input unchanged, the result
+/// valid with the input's genus and the given counts, every face a triangle, the old vertices (numbered
+/// first) keeping their valence and the new ones 6-valent; with `solid` (an input enclosing a positive
+/// volume), a positive volume again (the orientation kept).
+inline void check_triangle_step(const Mesh& in, Mesh (*scheme)(const Mesh&, Origins*),
+                                const TriangleStepCounts& counts, bool solid) {
+  CAPTURE(in.num_faces());
+  const Mesh copy = in;
+  const Mesh out = scheme(in, nullptr);
+  CHECK(in == copy);
+  check_valid_same_genus(in, out);
+  const std::size_t V = in.num_vertices();
+  CHECK(out.num_vertices() == V + counts.new_vertices);
+  CHECK(out.num_edges() == counts.edges);
+  CHECK(out.num_faces() == counts.faces);
+  CHECK(face_size_histogram(out) == std::map<std::uint32_t, std::size_t>{{3, counts.faces}});
+  std::uint32_t k = 0;
+  for (VertexId v : in.vertices()) CHECK(out.valence(VertexId(k++)) == in.valence(v));
+  for (; k < V + counts.new_vertices; ++k) CHECK(out.valence(VertexId(k)) == 6);
+  if (solid) CHECK(signed_volume(out) > 0);
+}
+
 /// A fixed, non-degenerate affine map x -> A x + t.
 struct AffineMap {
   glm::dmat3 a{1.2, 0.3, -0.1, 0.2, 0.9, 0.4, -0.3, 0.1, 1.1};
@@ -193,17 +255,6 @@ inline std::size_t count_holes(const Mesh& m) {
   std::size_t n = 0;
   for (FaceId f : m.faces()) n += m.is_hole(f);
   return n;
-}
-
-/// The message of the exception a call throws (empty if it throws none of type E).
-template <class E, class F>
-std::string error_message(F&& f) {
-  try {
-    f();
-  } catch (const E& e) {
-    return e.what();
-  }
-  return {};
 }
 
 /// The scheme through the editor and the log, as `dlfl subdivide -s NAME` runs it: two steps equal

@@ -5,11 +5,9 @@
 #include <vector>
 
 #include <dlfl/errors.h>
-#include <dlfl/history/editor.h>
-#include <dlfl/history/oplog.h>
-#include <dlfl/io/mesh_io.h>
 #include <dlfl/operations/operation_text.h>
 #include "commands.h"
+#include "editor_session.h"
 
 namespace dlfl::tool {
 
@@ -39,10 +37,7 @@ Action add_edit(CLI::App& app) {
     // Every op string is parsed before the input is read: a typo costs nothing.
     std::vector<std::pair<std::string, Params>> ops;
     for (const auto& text : a->ops) ops.push_back(parse_operation_text(text));
-    Editor::Options options;
-    options.embed_meshes = a->self_contained;
-    Editor editor(options);
-    editor.set_mesh(read_mesh(a->in), a->in);
+    Editor editor = open_editor(a->in, a->self_contained);
     for (std::size_t i = 0; i < ops.size(); ++i) {
       try {
         editor.apply(ops[i].first, ops[i].second);
@@ -58,10 +53,7 @@ Action add_edit(CLI::App& app) {
         throw InvalidArgument("--op " + std::to_string(i + 1) + " (" + ops[i].first + "): " + e.what());
       }
     }
-    WriteOptions write;
-    write.binary_ply = !a->ascii;
-    write_mesh(editor.mesh(), a->out, write);
-    if (!a->log.empty()) write_log(editor, a->log);
+    save_editor(editor, a->out, a->ascii, a->log);
     return ok;
   };
 }

@@ -3,6 +3,7 @@
 #include <iostream>
 #include <string>
 
+#include <dlfl/detail/enum_names.h>
 #include <dlfl/operations/operation.h>
 #include "commands.h"
 #include "spec_listing.h"
@@ -11,15 +12,10 @@ namespace dlfl::tool {
 namespace {
 
 const char* kind_name(OperationSpec::Kind kind) {
-  switch (kind) {
-    case OperationSpec::Kind::edit:
-      return "edit";
-    case OperationSpec::Kind::replace:
-      return "replace";
-    case OperationSpec::Kind::history:
-      return "history";
-  }
-  return "?";
+  static constexpr const char* names[] = {"edit", "replace", "history"};
+  static_assert(std::size(names) == std::size_t(OperationSpec::Kind::history) + 1,
+                "a name per enumerator, in order");
+  return detail::name_at(kind, names, "?");
 }
 
 nlohmann::ordered_json op_json(const OperationSpec& op) {

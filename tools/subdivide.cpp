@@ -7,12 +7,10 @@
 #include <dlfl/cells/cell_io.h>
 #include <dlfl/cells/mlca_subdivide.h>
 #include <dlfl/errors.h>
-#include <dlfl/history/editor.h>
-#include <dlfl/history/oplog.h>
-#include <dlfl/io/mesh_io.h>
 #include <dlfl/parameters.h>
 #include <dlfl/schemes/scheme_registry.h>
 #include "commands.h"
+#include "editor_session.h"
 
 namespace dlfl::tool {
 
@@ -76,15 +74,9 @@ Action add_subdivide(CLI::App& app) {
       if (params.has(name)) throw ParameterError("parameter " + name + " given twice", name);
       params[name] = std::move(value);
     }
-    Editor::Options options;
-    options.embed_meshes = a->self_contained;
-    Editor editor(options);
-    editor.set_mesh(read_mesh(a->in), a->in);
+    Editor editor = open_editor(a->in, a->self_contained);
     editor.subdivide(a->scheme, params, a->iterations);
-    WriteOptions write;
-    write.binary_ply = !a->ascii;
-    write_mesh(editor.mesh(), a->out, write);
-    if (!a->log.empty()) write_log(editor, a->log);
+    save_editor(editor, a->out, a->ascii, a->log);
     return ok;
   };
 }

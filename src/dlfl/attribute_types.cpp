@@ -1,21 +1,16 @@
 #include <dlfl/attribute_types.h>
 
+#include <iterator>
+
 #include <dlfl/detail/attribute_column.h>
+#include <dlfl/detail/enum_names.h>
 
 namespace dlfl {
 
 const char* to_string(AttributeType type) {
-  switch (type) {
-    case AttributeType::boolean:
-      return "boolean";
-    case AttributeType::integer:
-      return "integer";
-    case AttributeType::number:
-      return "number";
-    case AttributeType::point:
-      return "point";
-  }
-  return "unknown attribute type";
+  static constexpr const char* names[] = {"boolean", "integer", "number", "point"};
+  static_assert(std::size(names) == std::size_t(AttributeType::point) + 1, "a name per enumerator, in order");
+  return detail::name_at(type, names, "unknown attribute type");
 }
 
 bool same_attribute_value(const AttributeValue& a, const AttributeValue& b) {

@@ -106,15 +106,9 @@ DeleteEdgeResult Mesh::delete_edge(EdgeId e, const detail::Reuse& reuse) {
   const CornerId moved_start = keep_u ? start_w : start_u;
   const CornerId f_anchor = first_corner(f);
   const CornerId g_anchor = first_corner(g);  // meaningful only for a revived face
-  bool f_anchor_moved = f_anchor == s0 || f_anchor == s1;
-  bool g_anchor_inside = false;
-  CornerId c = moved_start;
-  do {
-    corners_[c.index()].face = g;
-    f_anchor_moved |= c == f_anchor;
-    g_anchor_inside |= c == g_anchor;
-    c = next(c);
-  } while (c != moved_start);
+  const MovedCycle moved = move_cycle(moved_start, g, f_anchor, g_anchor);
+  const bool f_anchor_moved = f_anchor == s0 || f_anchor == s1 || moved.passed_f_anchor;
+  const bool g_anchor_inside = moved.passed_g_anchor;
   faces_[f.index()].size = keep_u ? length_u : length_w;
   faces_[g.index()].size = keep_u ? length_w : length_u;
   if (f_anchor_moved) faces_[f.index()].corner = keep_u ? start_u : start_w;

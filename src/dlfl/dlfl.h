@@ -24,6 +24,7 @@
 #include <dlfl/handles.h>
 #include <dlfl/history/editor.h>
 #include <dlfl/history/oplog.h>
+#include <dlfl/indexed_lists.h>
 #include <dlfl/io/atomic_file.h>
 #include <dlfl/io/json_mesh.h>
 #include <dlfl/io/mesh_io.h>

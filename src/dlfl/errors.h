@@ -28,29 +28,37 @@ class TopologyError : public Error {
   using Error::Error;
 };
 
-/// A named parameter of an operation or scheme is unknown, missing, of the wrong type or out of its range.
-/// `parameter()` is its name (for a nested value, a path such as "params.t").
-class ParameterError : public InvalidArgument {
+namespace detail {
+/// An InvalidArgument that also names something (a parameter, a suggested name), apart from its message.
+class NamingError : public InvalidArgument {
  public:
-  ParameterError(const std::string& message, std::string parameter)
-      : InvalidArgument(message), parameter_(std::move(parameter)) {}
-  const std::string& parameter() const { return parameter_; }
+  NamingError(const std::string& message, std::string name)
+      : InvalidArgument(message), name_(std::move(name)) {}
+
+ protected:
+  const std::string& name() const { return name_; }
 
  private:
-  std::string parameter_;
+  std::string name_;
+};
+}  // namespace detail
+
+/// A named parameter of an operation or scheme is unknown, missing, of the wrong type or out of its range.
+/// Made from (message, parameter); `parameter()` is its name (for a nested value, a path such as
+/// "params.t").
+class ParameterError : public detail::NamingError {
+ public:
+  using NamingError::NamingError;
+  const std::string& parameter() const { return name(); }
 };
 
-/// A name (of an operation, a scheme) that nothing is registered under. The message lists what is known and,
-/// when a known name is close, suggests it ("did you mean 'honeycomb'?"); `suggestion()` is that name or
-/// empty.
-class UnknownNameError : public InvalidArgument {
+/// A name (of an operation, a scheme) that nothing is registered under. Made from (message, suggestion): the
+/// message lists what is known and, when a known name is close, suggests it ("did you mean 'honeycomb'?");
+/// `suggestion()` is that name or empty.
+class UnknownNameError : public detail::NamingError {
  public:
-  UnknownNameError(const std::string& message, std::string suggestion)
-      : InvalidArgument(message), suggestion_(std::move(suggestion)) {}
-  const std::string& suggestion() const { return suggestion_; }
-
- private:
-  std::string suggestion_;
+  using NamingError::NamingError;
+  const std::string& suggestion() const { return name(); }
 };
 
 /// Reading or writing a file failed, or its content is malformed. `file()` and `line()` locate the problem

@@ -5,6 +5,9 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
+
+#include <dlfl/errors.h>
 
 namespace dlfl {
 
@@ -18,5 +21,25 @@ std::string closest_name(std::string_view name, std::span<const std::string> kno
 /// "unknown KIND 'name' (did you mean 'x'?; known: a, b, c)" as thrown by the registries.
 std::string unknown_name_message(std::string_view kind, std::string_view name,
                                  std::span<const std::string> known, const std::string& suggestion);
+
+/// The names of a registry's entries (anything with a `name`), in its order.
+template <class Table>
+std::vector<std::string> names_of(const Table& table) {
+  std::vector<std::string> names;
+  for (const auto& entry : table) names.push_back(entry.name);
+  return names;
+}
+
+/// The registry entry called `name`. Throws UnknownNameError with `unknown_name_message`, `kind` naming the
+/// registry ("scheme"), and the closest name as its suggestion.
+template <class Table>
+const auto& find_named(const Table& table, std::string_view kind, std::string_view name) {
+  for (const auto& entry : table) {
+    if (entry.name == name) return entry;
+  }
+  const std::vector<std::string> names = names_of(table);
+  const std::string suggestion = closest_name(name, names);
+  throw UnknownNameError(unknown_name_message(kind, name, names, suggestion), suggestion);
+}
 
 }  // namespace dlfl

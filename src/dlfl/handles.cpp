@@ -1,5 +1,9 @@
 #include <dlfl/handles.h>
 
+#include <iterator>
+
+#include <dlfl/detail/enum_names.h>
+
 namespace dlfl {
 namespace {
 std::string name(char prefix, std::uint32_t value) {
@@ -14,17 +18,9 @@ std::string to_string(FaceId f) { return name('f', f.value); }
 std::string to_string(CornerId c) { return name('c', c.value); }
 
 const char* to_string(ElementKind kind) {
-  switch (kind) {
-    case ElementKind::vertex:
-      return "vertex";
-    case ElementKind::edge:
-      return "edge";
-    case ElementKind::face:
-      return "face";
-    case ElementKind::corner:
-      return "corner";
-  }
-  return "unknown element kind";
+  static constexpr const char* names[] = {"vertex", "edge", "face", "corner"};
+  static_assert(std::size(names) == std::size_t(ElementKind::corner) + 1, "a name per enumerator, in order");
+  return detail::name_at(kind, names, "unknown element kind");
 }
 
 }  // namespace dlfl

@@ -108,17 +108,11 @@ InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const detail::Reuse
   const CornerId moved_start = keep_b ? n1 : n2;  // the part that goes to g
   const CornerId kept_corner = keep_b ? c1 : c2;  // an original corner in the part that stays in f
   const CornerId moved_corner = keep_b ? c2 : c1;
-  bool f_anchor_moved = false;
-  bool g_anchor_inside = false;
   const CornerId f_anchor = first_corner(f);
   const CornerId g_anchor = first_corner(g);  // meaningful only for a revived face
-  CornerId c = moved_start;
-  do {
-    corners_[c.index()].face = g;
-    f_anchor_moved |= c == f_anchor;
-    g_anchor_inside |= c == g_anchor;
-    c = next(c);
-  } while (c != moved_start);
+  const MovedCycle moved = move_cycle(moved_start, g, f_anchor, g_anchor);
+  const bool f_anchor_moved = moved.passed_f_anchor;
+  const bool g_anchor_inside = moved.passed_g_anchor;
   corners_[(keep_b ? n2 : n1).index()].face = f;
   faces_[f.index()].size = (keep_b ? length_b : length_a) + 1;
   faces_[g.index()].size = (keep_b ? length_a : length_b) + 1;

@@ -353,63 +353,31 @@ class Mesh {
     remove_attribute(element_kind_v<H>, name);
   }
 
-  // The same per element kind: `auto w = mesh.add_vertex_attribute<double>("weight", 0.0); w[v] = 2;`.
-  template <class T>
-  VertexAttribute<T> add_vertex_attribute(std::string_view name, const T& default_value = T()) {
-    return add_attribute<VertexId, T>(name, default_value);
-  }
-  template <class T>
-  EdgeAttribute<T> add_edge_attribute(std::string_view name, const T& default_value = T()) {
-    return add_attribute<EdgeId, T>(name, default_value);
-  }
-  template <class T>
-  FaceAttribute<T> add_face_attribute(std::string_view name, const T& default_value = T()) {
-    return add_attribute<FaceId, T>(name, default_value);
-  }
-  template <class T>
-  CornerAttribute<T> add_corner_attribute(std::string_view name, const T& default_value = T()) {
-    return add_attribute<CornerId, T>(name, default_value);
-  }
-  template <class T>
-  VertexAttribute<T> vertex_attribute(std::string_view name) {
-    return attribute<VertexId, T>(name);
-  }
-  template <class T>
-  ConstAttribute<VertexId, T> vertex_attribute(std::string_view name) const {
-    return attribute<VertexId, T>(name);
-  }
-  template <class T>
-  EdgeAttribute<T> edge_attribute(std::string_view name) {
-    return attribute<EdgeId, T>(name);
-  }
-  template <class T>
-  ConstAttribute<EdgeId, T> edge_attribute(std::string_view name) const {
-    return attribute<EdgeId, T>(name);
-  }
-  template <class T>
-  FaceAttribute<T> face_attribute(std::string_view name) {
-    return attribute<FaceId, T>(name);
-  }
-  template <class T>
-  ConstAttribute<FaceId, T> face_attribute(std::string_view name) const {
-    return attribute<FaceId, T>(name);
-  }
-  template <class T>
-  CornerAttribute<T> corner_attribute(std::string_view name) {
-    return attribute<CornerId, T>(name);
-  }
-  template <class T>
-  ConstAttribute<CornerId, T> corner_attribute(std::string_view name) const {
-    return attribute<CornerId, T>(name);
-  }
-  bool has_vertex_attribute(std::string_view name) const { return has_attribute(ElementKind::vertex, name); }
-  bool has_edge_attribute(std::string_view name) const { return has_attribute(ElementKind::edge, name); }
-  bool has_face_attribute(std::string_view name) const { return has_attribute(ElementKind::face, name); }
-  bool has_corner_attribute(std::string_view name) const { return has_attribute(ElementKind::corner, name); }
-  void remove_vertex_attribute(std::string_view name) { remove_attribute(ElementKind::vertex, name); }
-  void remove_edge_attribute(std::string_view name) { remove_attribute(ElementKind::edge, name); }
-  void remove_face_attribute(std::string_view name) { remove_attribute(ElementKind::face, name); }
-  void remove_corner_attribute(std::string_view name) { remove_attribute(ElementKind::corner, name); }
+  // The same per element kind, KIND one of vertex, edge, face, corner: add_KIND_attribute<T>(name, default),
+  // KIND_attribute<T>(name) (const and not), has_KIND_attribute(name), remove_KIND_attribute(name), as in
+  // `auto w = mesh.add_vertex_attribute<double>("weight", 0.0); w[v] = 2;`. Written once, for every kind.
+#define DLFL_ATTRIBUTES_OF_KIND(KIND, H)                                                        \
+  template <class T>                                                                            \
+  Attribute<H, T> add_##KIND##_attribute(std::string_view name, const T& default_value = T()) { \
+    return add_attribute<H, T>(name, default_value);                                            \
+  }                                                                                             \
+  template <class T>                                                                            \
+  Attribute<H, T> KIND##_attribute(std::string_view name) {                                     \
+    return attribute<H, T>(name);                                                               \
+  }                                                                                             \
+  template <class T>                                                                            \
+  ConstAttribute<H, T> KIND##_attribute(std::string_view name) const {                          \
+    return attribute<H, T>(name);                                                               \
+  }                                                                                             \
+  bool has_##KIND##_attribute(std::string_view name) const {                                    \
+    return has_attribute(element_kind_v<H>, name);                                              \
+  }                                                                                             \
+  void remove_##KIND##_attribute(std::string_view name) { remove_attribute(element_kind_v<H>, name); }
+  DLFL_ATTRIBUTES_OF_KIND(vertex, VertexId)
+  DLFL_ATTRIBUTES_OF_KIND(edge, EdgeId)
+  DLFL_ATTRIBUTES_OF_KIND(face, FaceId)
+  DLFL_ATTRIBUTES_OF_KIND(corner, CornerId)
+#undef DLFL_ATTRIBUTES_OF_KIND
 
   // Type-erased access, for code that handles attributes it does not know (undo, file formats). Element
   // indices are handle indices: any slot below `capacity(kind)`, live or removed.
@@ -549,6 +517,23 @@ class Mesh {
   void link(CornerId a, CornerId b) {
     corners_[a.index()].next = b;
     corners_[b.index()].prev = a;
+  }
+  // Moves the corner cycle from `start` into face g, as a split does, telling whether it passed the corners
+  // `f_anchor` and `g_anchor` (the first corners of the faces, which may have to move).
+  struct MovedCycle {
+    bool passed_f_anchor = false;
+    bool passed_g_anchor = false;
+  };
+  MovedCycle move_cycle(CornerId start, FaceId g, CornerId f_anchor, CornerId g_anchor) {
+    MovedCycle moved;
+    CornerId c = start;
+    do {
+      corners_[c.index()].face = g;
+      moved.passed_f_anchor |= c == f_anchor;
+      moved.passed_g_anchor |= c == g_anchor;
+      c = next(c);
+    } while (c != start);
+    return moved;
   }
   // The live hole faces, counted from scratch: for the builders that write the arrays directly.
   std::size_t count_hole_faces() const;

@@ -25,12 +25,7 @@ MeshAssembler::MeshAssembler(std::size_t num_vertices, std::span<const std::uint
     throw InvalidArgument("MeshAssembler: offsets must start at 0");
   const std::size_t nf = offsets.size() - 1;
   const std::size_t nc = offsets.back();
-  check_counts(num_vertices, nf, nc);
-  mesh_.positions_.resize(num_vertices);
-  mesh_.vertex_corner_.assign(num_vertices, CornerId());
-  mesh_.corners_.resize(nc);
-  mesh_.faces_.resize(nf);
-  twin_.resize(nc);
+  allocate(num_vertices, nf, nc);
   for (std::uint32_t f = 0; f < nf; ++f) {
     const std::uint32_t begin = offsets[f], end = offsets[f + 1];
     if (end <= begin + 1)
@@ -39,13 +34,7 @@ MeshAssembler::MeshAssembler(std::size_t num_vertices, std::span<const std::uint
       throw InvalidArgument("MeshAssembler: face " + std::to_string(f) + " ends at corner " +
                             std::to_string(end) + ", past the " + std::to_string(nc) + " corners");
     }
-    mesh_.faces_[f] = {CornerId(begin), end - begin, true, false};
-    for (std::uint32_t k = begin; k < end; ++k) {
-      auto& c = mesh_.corners_[k];
-      c.face = FaceId(f);
-      c.next = CornerId(k + 1 == end ? begin : k + 1);
-      c.prev = CornerId(k == begin ? end - 1 : k - 1);
-    }
+    set_face(f, begin, end);
   }
 }
 
@@ -55,22 +44,17 @@ MeshAssembler::MeshAssembler(std::size_t num_vertices, std::size_t num_faces, st
     too_many(std::to_string(num_faces) + " faces of " + std::to_string(face_size) + " corners");
   }
   const std::size_t nc = num_faces * face_size;
-  check_counts(num_vertices, num_faces, nc);
+  allocate(num_vertices, num_faces, nc);
+  for (std::uint32_t f = 0; f < num_faces; ++f) set_face(f, f * face_size, (f + 1) * face_size);
+}
+
+void MeshAssembler::allocate(std::size_t num_vertices, std::size_t num_faces, std::size_t num_corners) {
+  check_counts(num_vertices, num_faces, num_corners);
   mesh_.positions_.resize(num_vertices);
   mesh_.vertex_corner_.assign(num_vertices, CornerId());
-  mesh_.corners_.resize(nc);
+  mesh_.corners_.resize(num_corners);
   mesh_.faces_.resize(num_faces);
-  twin_.resize(nc);
-  for (std::uint32_t f = 0; f < num_faces; ++f) {
-    const std::uint32_t begin = f * face_size, end = begin + face_size;
-    mesh_.faces_[f] = {CornerId(begin), face_size, true, false};
-    for (std::uint32_t k = begin; k < end; ++k) {
-      auto& c = mesh_.corners_[k];
-      c.face = FaceId(f);
-      c.next = CornerId(k + 1 == end ? begin : k + 1);
-      c.prev = CornerId(k == begin ? end - 1 : k - 1);
-    }
-  }
+  twin_.resize(num_corners);
 }
 
 Mesh MeshAssembler::finish() {

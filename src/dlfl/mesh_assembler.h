@@ -52,6 +52,19 @@ class MeshAssembler {
   Mesh finish();
 
  private:
+  // Checks the counts and sizes every array (twins unset, vertices without a corner).
+  void allocate(std::size_t num_vertices, std::size_t num_faces, std::size_t num_corners);
+  // Face f owns the corners begin .. end-1, linked in that order. Inline: it runs for every face.
+  void set_face(std::uint32_t f, std::uint32_t begin, std::uint32_t end) {
+    mesh_.faces_[f] = {CornerId(begin), end - begin, true, false};
+    for (std::uint32_t k = begin; k < end; ++k) {
+      auto& c = mesh_.corners_[k];
+      c.face = FaceId(f);
+      c.next = CornerId(k + 1 == end ? begin : k + 1);
+      c.prev = CornerId(k == begin ? end - 1 : k - 1);
+    }
+  }
+
   Mesh mesh_;
   detail::LargeVector<std::uint32_t> twin_;
 };

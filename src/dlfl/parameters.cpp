@@ -2,8 +2,10 @@
 
 #include <charconv>
 #include <cmath>
+#include <iterator>
 #include <optional>
 
+#include <dlfl/detail/enum_names.h>
 #include <dlfl/errors.h>
 #include <dlfl/format.h>
 #include <dlfl/mesh.h>
@@ -11,43 +13,11 @@
 namespace dlfl {
 
 std::string_view to_string(ParamType type) {
-  switch (type) {
-    case ParamType::boolean:
-      return "boolean";
-    case ParamType::integer:
-      return "integer";
-    case ParamType::number:
-      return "number";
-    case ParamType::text:
-      return "text";
-    case ParamType::point:
-      return "point";
-    case ParamType::vertex:
-      return "vertex";
-    case ParamType::edge:
-      return "edge";
-    case ParamType::face:
-      return "face";
-    case ParamType::corner:
-      return "corner";
-    case ParamType::vertices:
-      return "vertices";
-    case ParamType::edges:
-      return "edges";
-    case ParamType::faces:
-      return "faces";
-    case ParamType::corners:
-      return "corners";
-    case ParamType::numbers:
-      return "numbers";
-    case ParamType::points:
-      return "points";
-    case ParamType::mesh:
-      return "mesh";
-    case ParamType::params:
-      return "params";
-  }
-  return "?";
+  static constexpr const char* names[] = {"boolean", "integer", "number", "text",     "point", "vertex",
+                                          "edge",    "face",    "corner", "vertices", "edges", "faces",
+                                          "corners", "numbers", "points", "mesh",     "params"};
+  static_assert(std::size(names) == std::size_t(ParamType::params) + 1, "a name per enumerator, in order");
+  return detail::name_at(type, names, "?");
 }
 
 // ---- Value
@@ -57,37 +27,18 @@ Value::Value(Params params) : v_(std::make_shared<const Params>(std::move(params
 
 namespace {
 const char* kind_name(Value::Kind k) {
-  switch (k) {
-    case Value::Kind::empty:
-      return "nothing";
-    case Value::Kind::boolean:
-      return "a boolean";
-    case Value::Kind::integer:
-      return "an integer";
-    case Value::Kind::number:
-      return "a number";
-    case Value::Kind::text:
-      return "text";
-    case Value::Kind::point:
-      return "a point";
-    case Value::Kind::integers:
-      return "a list of integers";
-    case Value::Kind::numbers:
-      return "a list of numbers";
-    case Value::Kind::points:
-      return "a list of points";
-    case Value::Kind::mesh:
-      return "a mesh";
-    case Value::Kind::params:
-      return "a parameter set";
-  }
-  return "?";
+  static constexpr const char* names[] = {
+      "nothing",        "a boolean",          "an integer",        "a number",         "text",
+      "a point",        "a list of integers", "a list of numbers", "a list of points", "a mesh",
+      "a parameter set"};
+  static_assert(std::size(names) == std::size_t(Value::Kind::params) + 1, "a name per enumerator, in order");
+  return detail::name_at(k, names, "?");
 }
 
 template <class T, class V>
-const T& held(const V& v, Value::Kind actual, const char* wanted) {
+const T& held(const V& v, Value::Kind actual, Value::Kind wanted) {
   if (const T* p = std::get_if<T>(&v)) return *p;
-  throw InvalidArgument(std::string("expected ") + wanted + ", got " + kind_name(actual));
+  throw InvalidArgument(std::string("expected ") + kind_name(wanted) + ", got " + kind_name(actual));
 }
 
 // Appends `item` to a `separator`-separated list.
@@ -101,31 +52,31 @@ std::string point_text(const glm::dvec3& p) {
 }
 }  // namespace
 
-bool Value::as_bool() const { return held<bool>(v_, kind(), "a boolean"); }
-std::int64_t Value::as_integer() const { return held<std::int64_t>(v_, kind(), "an integer"); }
+bool Value::as_bool() const { return held<bool>(v_, kind(), Kind::boolean); }
+std::int64_t Value::as_integer() const { return held<std::int64_t>(v_, kind(), Kind::integer); }
 double Value::as_number() const {
   if (const auto* i = std::get_if<std::int64_t>(&v_)) return static_cast<double>(*i);
-  return held<double>(v_, kind(), "a number");
+  return held<double>(v_, kind(), Kind::number);
 }
-const std::string& Value::as_text() const { return held<std::string>(v_, kind(), "text"); }
-const glm::dvec3& Value::as_point() const { return held<glm::dvec3>(v_, kind(), "a point"); }
+const std::string& Value::as_text() const { return held<std::string>(v_, kind(), Kind::text); }
+const glm::dvec3& Value::as_point() const { return held<glm::dvec3>(v_, kind(), Kind::point); }
 const std::vector<std::int64_t>& Value::as_integers() const {
-  return held<std::vector<std::int64_t>>(v_, kind(), "a list of integers");
+  return held<std::vector<std::int64_t>>(v_, kind(), Kind::integers);
 }
 const std::vector<double>& Value::as_numbers() const {
-  return held<std::vector<double>>(v_, kind(), "a list of numbers");
+  return held<std::vector<double>>(v_, kind(), Kind::numbers);
 }
 const std::vector<glm::dvec3>& Value::as_points() const {
-  return held<std::vector<glm::dvec3>>(v_, kind(), "a list of points");
+  return held<std::vector<glm::dvec3>>(v_, kind(), Kind::points);
 }
 const Mesh& Value::as_mesh() const { return *mesh_pointer(); }
 const std::shared_ptr<const Mesh>& Value::mesh_pointer() const {
-  const auto& p = held<std::shared_ptr<const Mesh>>(v_, kind(), "a mesh");
+  const auto& p = held<std::shared_ptr<const Mesh>>(v_, kind(), Kind::mesh);
   if (!p) throw InvalidArgument("expected a mesh, got none");
   return p;
 }
 const Params& Value::as_params() const {
-  const auto& p = held<std::shared_ptr<const Params>>(v_, kind(), "a parameter set");
+  const auto& p = held<std::shared_ptr<const Params>>(v_, kind(), Kind::params);
   if (!p) throw InvalidArgument("expected a parameter set, got none");
   return *p;
 }

@@ -1,35 +1,19 @@
 #include <dlfl/validate.h>
 
+#include <iterator>
 #include <numeric>
+
+#include <dlfl/detail/enum_names.h>
 
 namespace dlfl {
 
 const char* to_string(ViolationCode code) {
-  switch (code) {
-    case ViolationCode::removed_reference:
-      return "removed_reference";
-    case ViolationCode::next_prev:
-      return "next_prev";
-    case ViolationCode::corner_face:
-      return "corner_face";
-    case ViolationCode::face_size:
-      return "face_size";
-    case ViolationCode::edge_corner:
-      return "edge_corner";
-    case ViolationCode::edge_sides:
-      return "edge_sides";
-    case ViolationCode::vertex_corner:
-      return "vertex_corner";
-    case ViolationCode::pinched_vertex:
-      return "pinched_vertex";
-    case ViolationCode::point_sphere:
-      return "point_sphere";
-    case ViolationCode::counts:
-      return "counts";
-    case ViolationCode::euler_characteristic:
-      return "euler_characteristic";
-  }
-  return "unknown";
+  static constexpr const char* names[] = {
+      "removed_reference", "next_prev",      "corner_face",  "face_size", "edge_corner",         "edge_sides",
+      "vertex_corner",     "pinched_vertex", "point_sphere", "counts",    "euler_characteristic"};
+  static_assert(std::size(names) == std::size_t(ViolationCode::euler_characteristic) + 1,
+                "a name per enumerator, in order");
+  return detail::name_at(code, names, "unknown");
 }
 
 namespace {

@@ -16,8 +16,7 @@ void CellComplex::add_cell(std::span<const std::uint32_t> cell) {
     throw InvalidArgument("cell " + std::to_string(num_cells()) +
                           ": more than 2^32 - 1 vertex indices in one complex");
   }
-  indices.insert(indices.end(), cell.begin(), cell.end());
-  offsets.push_back(static_cast<std::uint32_t>(indices.size()));
+  append_list(cell);
 }
 
 void check_cell_complex(const CellComplex& complex) {

@@ -4,14 +4,14 @@
 // lives beside the DLFL rather than inside it. Lower-dimensional cells mixed with higher ones are creases.
 
 #include <cstdint>
-#include <glm/vec3.hpp>
 #include <initializer_list>
 #include <span>
-#include <vector>
+
+#include <dlfl/indexed_lists.h>
 
 namespace dlfl {
 
-/// Positions plus cells given as vertex indices, stored flat like `PolygonSoup`: cell i uses
+/// Positions plus cells given as vertex indices, stored flat like `PolygonSoup` (IndexedLists): cell i uses
 /// `indices[offsets[i] .. offsets[i+1])`, and its size 1, 2, 4 or 8 gives its dimension 0, 1, 2 or 3.
 ///
 /// Vertex order of a d-cube is the tensor-product order: vertex k of a cell sits at the corner of the unit
@@ -19,16 +19,10 @@ namespace dlfl {
 /// a quad is (p00, p10, p01, p11), whose boundary cycle is v0 v1 v3 v2; a hexahedron is (p000, p100, p010,
 /// p110, p001, p101, p011, p111). The cyclic orders of file formats (VTK quads and hexahedra, OBJ faces) are
 /// mapped on read and write.
-struct CellComplex {
-  std::vector<glm::dvec3> positions;
-  std::vector<std::uint32_t> offsets{0};
-  std::vector<std::uint32_t> indices;
-
-  std::size_t num_cells() const { return offsets.size() - 1; }
+struct CellComplex : IndexedLists {
+  std::size_t num_cells() const { return num_lists(); }
   /// The vertex indices of cell i, in tensor-product order.
-  std::span<const std::uint32_t> cell(std::size_t i) const {
-    return {indices.data() + offsets[i], indices.data() + offsets[i + 1]};
-  }
+  std::span<const std::uint32_t> cell(std::size_t i) const { return list(i); }
   /// The dimension of cell i: 0 (a vertex), 1 (a segment), 2 (a quad) or 3 (a hexahedron).
   int dimension(std::size_t i) const { return dimension_of_size(offsets[i + 1] - offsets[i]); }
 

@@ -56,16 +56,8 @@ CellComplex parse_cell_obj(std::string_view text, const std::string& name) {
       add(quad);
     }
   }
-  const std::size_t nv = out.positions.size();
-  for (std::size_t i = 0; i < out.num_cells(); ++i) {
-    for (std::uint32_t v : out.cell(i)) {
-      if (v >= nv) {
-        throw IoError("vertex index " + std::to_string(std::uint64_t{v} + 1) +
-                          " is out of range (there are " + std::to_string(nv) + " vertices)",
-                      name, cell_lines[i]);
-      }
-    }
-  }
+  io_detail::check_obj_indices(
+      out.num_cells(), [&](std::size_t i) { return out.cell(i); }, cell_lines, out.positions.size(), name);
   return out;
 }
 

@@ -162,26 +162,24 @@ void Editor::end_group() {
   if (!group.entry.parts.empty()) push(std::move(group.entry));
 }
 
-bool Editor::undo() {
-  require_no_group("undo");
-  if (undo_.empty()) return false;
-  Entry entry = std::move(undo_.back());
-  undo_.pop_back();
+template <class Entries, class Keep>
+bool Editor::flip_latest(const char* op, Entries& from, const Keep& keep) {
+  require_no_group(op);
+  if (from.empty()) return false;
+  Entry entry = std::move(from.back());
+  from.pop_back();
   flip(mesh_, entry);
-  redo_.push_back(std::move(entry));
-  log_.push_back({"undo", {}});
+  keep(std::move(entry));
+  log_.push_back({op, {}});
   return true;
 }
 
+bool Editor::undo() {
+  return flip_latest("undo", undo_, [this](Entry entry) { redo_.push_back(std::move(entry)); });
+}
+
 bool Editor::redo() {
-  require_no_group("redo");
-  if (redo_.empty()) return false;
-  Entry entry = std::move(redo_.back());
-  redo_.pop_back();
-  flip(mesh_, entry);
-  push(std::move(entry));
-  log_.push_back({"redo", {}});
-  return true;
+  return flip_latest("redo", redo_, [this](Entry entry) { push(std::move(entry)); });
 }
 
 namespace {

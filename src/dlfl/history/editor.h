@@ -142,6 +142,9 @@ class Editor {
   void push(Entry entry);                     // onto the undo list, trimmed to the undo limit
   void require_no_group(const char* what) const;
   static void flip(Mesh& mesh, Entry& entry);  // undo or redo an entry, turning it into its opposite
+  // `undo` or `redo` (`op`): the latest entry of `from`, flipped and handed to `keep`, and logged.
+  template <class Entries, class Keep>
+  bool flip_latest(const char* op, Entries& from, const Keep& keep);
 
   Options options_;
   Mesh mesh_;

@@ -34,16 +34,9 @@ ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
       parsed.face_lines.push_back(s.line());
     }
   }
-  const std::size_t nv = soup.positions.size();
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    for (std::uint32_t i : soup.face(f)) {
-      if (i >= nv) {
-        throw IoError("vertex index " + std::to_string(std::uint64_t{i} + 1) +
-                          " is out of range (there are " + std::to_string(nv) + " vertices)",
-                      name, parsed.face_lines[f]);
-      }
-    }
-  }
+  check_obj_indices(
+      soup.num_faces(), [&](std::size_t f) { return soup.face(f); }, parsed.face_lines, soup.positions.size(),
+      name);
   return parsed;
 }
 

@@ -65,9 +65,8 @@ namespace detail {
 
 SchemeSpec catmull_clark_scheme() {
   return parameterless_scheme(
-      "catmull-clark",
-      "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh",
-      catmull_clark);
+      catmull_clark, "catmull-clark",
+      "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh");
 }
 
 }  // namespace detail

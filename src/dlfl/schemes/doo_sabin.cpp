@@ -11,6 +11,7 @@
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
+#include <dlfl/schemes/detail/vertex_faces.h>
 
 namespace dlfl {
 namespace {
@@ -96,26 +97,9 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
     for (CornerId c : m.corners(FaceId(f))) slot[c.index()] = next_slot++;
   }
   for (std::uint32_t e = 0; e < ne; ++e) offsets[nf + e] = e_base + 4 * e;
-  next_slot = v_base;
-  for (std::uint32_t v = 0; v < nv; ++v) {
-    offsets[nf + ne + v] = next_slot;
-    const CornerId first = m.corner(VertexId(v));
-    if (!m.edge(first).valid()) {
-      throw TopologyError("doo-sabin: " + to_string(original_handle<VertexId>(input, v)) +
-                          " is a point sphere (no edge)");
-    }
-    // Counter-clockwise around v, so that the V-face is oriented like the input.
-    CornerId c = first;
-    do {
-      vslot[c.index()] = next_slot++;
-      c = m.prev_around_vertex(c);
-    } while (c != first);
-    if (next_slot - offsets[nf + ne + v] == 1) {
-      throw TopologyError("doo-sabin: " + to_string(original_handle<VertexId>(input, v)) +
-                          " has valence 1 (its face would have a single corner)");
-    }
-  }
-  offsets.back() = next_slot;  // = 2 nc + 4 ne = 4 nc
+  // V-faces counter-clockwise around v, oriented like the input; they end at 2 nc + 4 ne = 4 nc.
+  detail::number_vertex_face_corners(m, input, "doo-sabin", v_base, std::span(offsets).subspan(nf + ne),
+                                     vslot, true);
 
   MeshAssembler out(nc, offsets);
 
@@ -193,7 +177,7 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
       edge_of[q + 1] = in.corner(m.corner(EdgeId(e), 1).index());
       edge_of[q + 3] = in.corner(m.corner(EdgeId(e), 0).index());
     }
-    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+    detail::set_edge_origins(*origins, result, edge_of);
   }
   return result;
 }
@@ -202,9 +186,8 @@ namespace detail {
 
 SchemeSpec doo_sabin_scheme() {
   return parameterless_scheme(
-      "doo-sabin",
-      "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent",
-      doo_sabin);
+      doo_sabin, "doo-sabin",
+      "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent");
 }
 
 }  // namespace detail

@@ -9,6 +9,7 @@
 #include <dlfl/schemes/detail/corner_origins.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
+#include <dlfl/schemes/detail/vertex_faces.h>
 
 namespace dlfl {
 
@@ -32,31 +33,11 @@ Mesh detail::dual(const Mesh& input, Origins* origins, std::vector<Origin>* corn
     }
   }
 
-  // Output face v owns the corners offsets[v] .. offsets[v+1]-1: vslot[c] is the one for input corner c.
-  //
-  // Orientation. Let c be a corner at v in face f, p = prev(c). Seen from outside f is counter-clockwise, so
-  // at v its interior is the angle swept counter-clockwise from the direction of edge(c) (towards next(c)) to
-  // that of edge(p) (towards vertex(p)). Turning further counter-clockwise crosses edge(p) into the face of
-  // opposite(p), whose corner at v is opposite(p) itself (it starts where p's edge ends): that is
-  // prev_around_vertex(c). So listing the faces around v along prev_around_vertex is counter-clockwise and the
-  // dual face's normal points outward.
+  // Output face v owns the corners offsets[v] .. offsets[v+1]-1: vslot[c] is the one for input corner c,
+  // counter-clockwise around v, so that the dual face's normal points outward.
   std::vector<std::uint32_t> offsets(std::size_t(nv) + 1);
   std::vector<std::uint32_t> vslot(nc);
-  std::uint32_t next_slot = 0;
-  for (std::uint32_t v = 0; v < nv; ++v) {
-    offsets[v] = next_slot;
-    const CornerId first = m.corner(VertexId(v));
-    if (!m.edge(first).valid()) {
-      throw TopologyError("dual: " + to_string(original_handle<VertexId>(input, v)) +
-                          " is a point sphere (no edge)");
-    }
-    CornerId c = first;
-    do {
-      vslot[c.index()] = next_slot++;
-      c = m.prev_around_vertex(c);
-    } while (c != first);
-  }
-  offsets[nv] = next_slot;
+  detail::number_vertex_face_corners(m, input, "dual", 0, offsets, vslot, false);
 
   MeshAssembler out(nf, offsets);
   for (std::uint32_t f = 0; f < nf; ++f) {
@@ -89,7 +70,7 @@ Mesh detail::dual(const Mesh& input, Origins* origins, std::vector<Origin>* corn
       // The corner for c crosses edge(prev(c)) (see the twins above).
       std::vector<Origin> edge_of(nc);
       for (std::uint32_t k = 0; k < nc; ++k) edge_of[vslot[k]] = in.edge(m.edge(m.prev(CornerId(k))).index());
-      detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+      detail::set_edge_origins(*origins, result, edge_of);
     }
   }
   return result;
@@ -99,9 +80,8 @@ namespace detail {
 
 SchemeSpec dual_scheme() {
   return parameterless_scheme(
-      "dual",
-      "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge",
-      dlfl::dual);
+      dlfl::dual, "dual",
+      "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge");
 }
 
 }  // namespace detail

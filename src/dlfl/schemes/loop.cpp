@@ -149,7 +149,7 @@ Mesh loop(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec loop_scheme() {
-  return parameterless_scheme("loop", "Loop: every triangle into four, on triangle meshes", loop);
+  return parameterless_scheme(loop, "loop", "Loop: every triangle into four, on triangle meshes");
 }
 
 }  // namespace detail

@@ -37,16 +37,11 @@ Mesh mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Origins* o
 
 Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Origins* origins,
                           std::vector<Origin>* corners) {
-  check_mp_honeycomb_params(params);
-  std::optional<Mesh> storage;
-  const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const glm::dvec3 center = params.center.value_or(vertex_centroid(m));
-  require_convex_polyhedron(m, center, "mp-honeycomb");
-  detail::check_output_size("mp-honeycomb", 4.0 * double(m.num_edges()));
-  const auto [nv, ne, nf, nc] = dense_counts(m);
-
   // Per-edge split fractions of the exterior angle, per-face taus (drawn from the seed when random).
-  const auto [fraction, tau] = detail::mp_choices(ne, nf, params.ratio, params.tau, params.random);
+  const MpStepInput step("mp-honeycomb", input, params, ElementKind::face);
+  const Mesh& m = step.mesh();
+  const auto& [fraction, tau] = step.choices();
+  const auto [nv, ne, nf, nc] = dense_counts(m);
 
   std::vector<glm::dvec3> face_normal(nf);
   for (std::uint32_t f = 0; f < nf; ++f) face_normal[f] = face_plane(m, FaceId(f)).normal;
@@ -60,14 +55,7 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
   }
 
   // Output faces: the f-faces in input face order, then one hexagon per input edge (6 corners each).
-  std::vector<std::uint32_t> offsets(std::size_t(nf) + ne + 1);
-  std::vector<std::uint32_t> position(nc);  // the f-face corner made from input corner c
-  std::uint32_t k = 0;
-  for (std::uint32_t f = 0; f < nf; ++f) {
-    offsets[f] = k;
-    for (CornerId c : m.corners(FaceId(f))) position[c.index()] = k++;
-  }
-  for (std::uint32_t e = 0; e <= ne; ++e) offsets[nf + e] = nc + 6 * e;
+  const auto [offsets, position] = mp_face_layout(m, ne, 6);  // position: the f-face corner of input corner c
   MeshAssembler out(std::size_t(nv) + nc, offsets);
   for (std::uint32_t v = 0; v < nv; ++v) out.set_position(v, m.position(VertexId(v)));
 
@@ -129,7 +117,8 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
     out.set_corner(base + 4, nv + m.next(c0).index(), position[c0.index()]);
     out.set_corner(base + 5, nv + c0.index(), up(m.prev(c0)));
   }
-  Mesh result = detail::require_convex_result(out.finish(), center, "mp-honeycomb", params.tau, params.ratio);
+  Mesh result =
+      detail::require_convex_result(out.finish(), step.center(), "mp-honeycomb", params.tau, params.ratio);
   if (!origins && !corners) return result;
   // Per output corner: the origin of the corner and of its outgoing edge. In hexagon e (corners as set
   // above) the corners at f-face vertices stem from those vertices' corners, the ones at old vertices from
@@ -156,7 +145,7 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
     for (std::uint32_t k = 0; k < nc; ++k) origins->vertices[nv + k] = in.corner(k);
     for (std::uint32_t f = 0; f < nf; ++f) origins->faces[f] = in.face(f);
     for (std::uint32_t e = 0; e < ne; ++e) origins->faces[nf + e] = in.edge(e);
-    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+    detail::set_edge_origins(*origins, result, edge_of);
   }
   if (corners) *corners = std::move(corner_of);
   return result;
@@ -165,28 +154,11 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
 namespace detail {
 
 SchemeSpec mp_honeycomb_scheme() {
-  const MpHoneycombParams d;
-  std::vector<ParamSpec> params = {
-      param("tau", ParamType::number, d.tau,
-            "where each f-face lies between its old face (0) and the vertex v_F of the region over it (1)")
-          .in_open(0, 1),
-      param("ratio", ParamType::number, d.ratio,
-            "how each edge plane divides the edge's exterior angle, ratio : 1 (1 bisects)")
-          .range(0, std::numeric_limits<double>::infinity(), true, true),
-  };
-  for (ParamSpec& s : mp_shared_param_specs()) params.push_back(std::move(s));
-  return {"mp-honeycomb",
-          "Meng-Prautzsch honeycomb H: convexity-preserving refinement of convex polyhedra by cutting planes",
-          std::move(params),
-          {},
-          [](const Mesh& m, const Params& p, Origins* origins) {
-            MpHoneycombParams h;
-            h.tau = p.number("tau");
-            h.ratio = p.number("ratio");
-            h.center = mp_center_from(p);
-            h.random = mp_random_from(p);
-            return dlfl::mp_honeycomb(m, h, origins);
-          }};
+  return mp_step_scheme<MpHoneycombParams>(
+      dlfl::mp_honeycomb, "mp-honeycomb",
+      "Meng-Prautzsch honeycomb H: convexity-preserving refinement of convex polyhedra by cutting planes",
+      "where each f-face lies between its old face (0) and the vertex v_F of the region over it (1)",
+      "how each edge plane divides the edge's exterior angle, ratio : 1 (1 bisects)");
 }
 
 }  // namespace detail

@@ -4,7 +4,6 @@
 // vertices and cuts with planes. See docs/meng_prautzsch.md.
 
 #include <glm/vec3.hpp>
-#include <optional>
 
 #include <dlfl/mesh.h>
 #include <dlfl/schemes/detail/meng_prautzsch_common.h>
@@ -12,20 +11,16 @@
 
 namespace dlfl {
 
-struct MpHoneycombParams {
-  /// Where the f-face lies between its old face F (0) and v_F, the nearest vertex of Delta_F off F (1).
-  /// In (0, 1); 0.5 is the midplane of the standard scheme.
-  double tau = 0.5;
-  /// How each edge plane divides the edge's exterior angle: angle(n0, n) : angle(n, n1) = ratio : 1, with n0
-  /// and n1 the normals of the faces on side 0 and side 1 of the edge and n the plane's normal. Positive;
-  /// 1 bisects.
-  double ratio = 1.0;
-  /// The centre that must lie strictly inside (the paper's origin); by default the vertex centroid. H itself
-  /// does not move anything towards it: it only takes part in the convexity check.
-  std::optional<glm::dvec3> center;
-  /// Random per-edge ratios and per-face taus instead of `ratio` and `tau`.
-  MpRandomChoice random;
-};
+/// The parameters of H (see MpStepParams for their ranges and defaults):
+/// - `tau`: where the f-face lies between its old face F (0) and v_F, the nearest vertex of Delta_F off F
+///   (1); 0.5 is the midplane of the standard scheme.
+/// - `ratio`: how each edge plane divides the edge's exterior angle: angle(n0, n) : angle(n, n1) = ratio : 1,
+///   with n0 and n1 the normals of the faces on side 0 and side 1 of the edge and n the plane's normal; 1
+///   bisects.
+/// - `center`: the centre that must lie strictly inside. H itself does not move anything towards it: it only
+///   takes part in the convexity check.
+/// - `random`: random per-edge ratios and per-face taus.
+struct MpHoneycombParams : MpStepParams {};
 
 /// Throws InvalidArgument naming the parameter if tau is not in (0, 1), ratio not positive and finite, the
 /// centre not finite, or epsilon not in (0, 1/2].

@@ -1,7 +1,6 @@
 #include <dlfl/schemes/meng_prautzsch_mixed.h>
 
 #include <cctype>
-#include <limits>
 
 #include <dlfl/errors.h>
 #include <dlfl/analysis/convex_polyhedron.h>
@@ -156,20 +155,18 @@ Mesh mhp(const Mesh& input, const MhpParams& params, const MhpStepObserver& obse
 namespace detail {
 
 SchemeSpec mhp_scheme() {
-  const MhpParams d;
-  const double inf = std::numeric_limits<double>::infinity();
   std::vector<ParamSpec> params = {
-      param("pattern", ParamType::text, d.pattern,
+      param("pattern", ParamType::text, MhpParams().pattern,
             "the steps in order, H (honeycomb) and P (pushing) with counts and groups: H4P4, (HP)2"),
-      param("tau_h", ParamType::number, d.honeycomb.tau, "tau of the H steps (see mp-honeycomb)")
-          .in_open(0, 1),
-      param("ratio_h", ParamType::number, d.honeycomb.ratio, "ratio of the H steps (see mp-honeycomb)")
-          .range(0, inf, true, true),
-      param("tau_p", ParamType::number, d.pushing.tau, "tau of the P steps (see mp-pushing)").in_open(0, 1),
-      param("ratio_p", ParamType::number, d.pushing.ratio, "ratio of the P steps (see mp-pushing)")
-          .range(0, inf, true, true),
   };
-  for (ParamSpec& s : mp_shared_param_specs()) params.push_back(std::move(s));
+  for (const std::vector<ParamSpec>& specs :
+       {mp_step_param_specs("tau_h", "tau of the H steps (see mp-honeycomb)", "ratio_h",
+                            "ratio of the H steps (see mp-honeycomb)"),
+        mp_step_param_specs("tau_p", "tau of the P steps (see mp-pushing)", "ratio_p",
+                            "ratio of the P steps (see mp-pushing)"),
+        mp_shared_param_specs()}) {
+    params.insert(params.end(), specs.begin(), specs.end());
+  }
   return {"mhp", "Meng-Prautzsch mixed honeycomb pushing: a pattern of H and P steps around one centre",
           std::move(params),
           // The pattern's grammar needs no mesh: a malformed one is refused before any work.
@@ -185,12 +182,9 @@ SchemeSpec mhp_scheme() {
           [](const Mesh& m, const Params& p, Origins* origins) {
             MhpParams x;
             x.pattern = p.text("pattern");
-            x.honeycomb.tau = p.number("tau_h");
-            x.honeycomb.ratio = p.number("ratio_h");
-            x.pushing.tau = p.number("tau_p");
-            x.pushing.ratio = p.number("ratio_p");
+            x.honeycomb = MpHoneycombParams{mp_step_params_from(p, "tau_h", "ratio_h")};
+            x.pushing = MpPushingParams{mp_step_params_from(p, "tau_p", "ratio_p")};
             x.center = mp_center_from(p);
-            x.honeycomb.random = x.pushing.random = mp_random_from(p);
             return mhp(m, x, {}, origins);
           }};
 }

@@ -45,26 +45,15 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params, Origins* origi
 
 Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origins* origins,
                         std::vector<Origin>* corners) {
-  check_mp_pushing_params(params);
-  std::optional<Mesh> storage;
-  const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const glm::dvec3 center = params.center.value_or(vertex_centroid(m));
-  require_convex_polyhedron(m, center, "mp-pushing");
-  detail::check_output_size("mp-pushing", 4.0 * double(m.num_edges()));
+  // Per-edge split fractions along the edge, per-vertex taus (drawn from the seed when random).
+  const MpStepInput step("mp-pushing", input, params, ElementKind::vertex);
+  const Mesh& m = step.mesh();
+  const glm::dvec3& center = step.center();
+  const auto& [fraction, tau] = step.choices();
   const auto [nv, ne, nf, nc] = dense_counts(m);
 
-  // Per-edge split fractions along the edge, per-vertex taus (drawn from the seed when random).
-  const auto [fraction, tau] = detail::mp_choices(ne, nv, params.ratio, params.tau, params.random);
-
   // Output faces: the central faces in input face order, then one triangle per input corner.
-  std::vector<std::uint32_t> offsets(std::size_t(nf) + nc + 1);
-  std::vector<std::uint32_t> position(nc);  // the central-face corner made from input corner c
-  std::uint32_t k = 0;
-  for (std::uint32_t f = 0; f < nf; ++f) {
-    offsets[f] = k;
-    for (CornerId c : m.corners(FaceId(f))) position[c.index()] = k++;
-  }
-  for (std::uint32_t i = 0; i <= nc; ++i) offsets[nf + i] = nc + 3 * i;
+  const auto [offsets, position] = mp_face_layout(m, nc, 3);  // position: the central-face corner of corner c
   MeshAssembler out(std::size_t(nv) + ne, offsets);
   std::vector<glm::dvec3> point(ne);
   for (std::uint32_t e = 0; e < ne; ++e) {
@@ -120,7 +109,7 @@ Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origin
       edge_of[triangle(c) + 1] = in.corner(i);
       edge_of[triangle(c) + 2] = in.edge(m.edge(m.prev(c)).index());
     }
-    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) { return edge_of[k]; });
+    detail::set_edge_origins(*origins, result, edge_of);
   }
   return result;
 }
@@ -128,29 +117,11 @@ Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origin
 namespace detail {
 
 SchemeSpec mp_pushing_scheme() {
-  const MpPushingParams d;
-  std::vector<ParamSpec> params = {
-      param("tau", ParamType::number, d.tau,
-            "how far each old vertex moves towards the centre, as a fraction of the way to its extreme "
-            "position")
-          .in_open(0, 1),
-      param("ratio", ParamType::number, d.ratio,
-            "where each edge's new point divides it: |from(e) m| : |m to(e)| = ratio : 1 (1: the midpoint)")
-          .range(0, std::numeric_limits<double>::infinity(), true, true),
-  };
-  for (ParamSpec& s : mp_shared_param_specs()) params.push_back(std::move(s));
-  return {"mp-pushing",
-          "Meng-Prautzsch corner pushing P: cut every corner off, push the old vertices towards the centre",
-          std::move(params),
-          {},
-          [](const Mesh& m, const Params& p, Origins* origins) {
-            MpPushingParams q;
-            q.tau = p.number("tau");
-            q.ratio = p.number("ratio");
-            q.center = mp_center_from(p);
-            q.random = mp_random_from(p);
-            return dlfl::mp_pushing(m, q, origins);
-          }};
+  return mp_step_scheme<MpPushingParams>(
+      dlfl::mp_pushing, "mp-pushing",
+      "Meng-Prautzsch corner pushing P: cut every corner off, push the old vertices towards the centre",
+      "how far each old vertex moves towards the centre, as a fraction of the way to its extreme position",
+      "where each edge's new point divides it: |from(e) m| : |m to(e)| = ratio : 1 (1: the midpoint)");
 }
 
 }  // namespace detail

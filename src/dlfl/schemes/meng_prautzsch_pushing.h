@@ -5,7 +5,6 @@
 
 #include <cstddef>
 #include <glm/vec3.hpp>
-#include <optional>
 #include <span>
 
 #include <dlfl/mesh.h>
@@ -14,17 +13,13 @@
 
 namespace dlfl {
 
-struct MpPushingParams {
-  /// How far each old vertex moves towards the centre, as a fraction of the way to its extreme position.
-  /// In (0, 1).
-  double tau = 0.5;
-  /// Where the new point divides each edge: |from(e) m| : |m to(e)| = ratio : 1. Positive; 1 is the midpoint.
-  double ratio = 1.0;
-  /// The centre the vertices move towards (the paper's origin); by default the vertex centroid.
-  std::optional<glm::dvec3> center;
-  /// Random per-edge ratios and per-vertex taus instead of `ratio` and `tau`.
-  MpRandomChoice random;
-};
+/// The parameters of P (see MpStepParams for their ranges and defaults):
+/// - `tau`: how far each old vertex moves towards the centre, as a fraction of the way to its extreme
+///   position.
+/// - `ratio`: where the new point divides each edge: |from(e) m| : |m to(e)| = ratio : 1; 1 is the midpoint.
+/// - `center`: the centre the vertices move towards.
+/// - `random`: random per-edge ratios and per-vertex taus.
+struct MpPushingParams : MpStepParams {};
 
 /// Throws InvalidArgument naming the parameter if tau is not in (0, 1), ratio not positive and finite, the
 /// centre not finite, or epsilon not in (0, 1/2].

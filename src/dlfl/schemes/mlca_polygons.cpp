@@ -181,9 +181,8 @@ namespace detail {
 
 SchemeSpec mlca_scheme() {
   return parameterless_scheme(
-      "mlca",
-      "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed",
-      mlca);
+      mlca, "mlca",
+      "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed");
 }
 
 }  // namespace detail

@@ -35,20 +35,9 @@ const std::vector<SchemeSpec>& table() {
 
 std::span<const SchemeSpec> schemes() { return table(); }
 
-std::vector<std::string> scheme_names() {
-  std::vector<std::string> names;
-  for (const SchemeSpec& s : table()) names.push_back(s.name);
-  return names;
-}
+std::vector<std::string> scheme_names() { return names_of(table()); }
 
-const SchemeSpec& find_scheme(std::string_view name) {
-  for (const SchemeSpec& s : table()) {
-    if (s.name == name) return s;
-  }
-  const std::vector<std::string> names = scheme_names();
-  const std::string suggestion = closest_name(name, names);
-  throw UnknownNameError(unknown_name_message("scheme", name, names, suggestion), suggestion);
-}
+const SchemeSpec& find_scheme(std::string_view name) { return find_named(table(), "scheme", name); }
 
 namespace {
 Params resolve(const SchemeSpec& spec, const Params& given) {

@@ -121,8 +121,8 @@ namespace detail {
 
 SchemeSpec sqrt3_scheme() {
   return parameterless_scheme(
-      "sqrt3",
-      "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes", sqrt3);
+      sqrt3, "sqrt3",
+      "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes");
 }
 
 }  // namespace detail

@@ -197,6 +197,23 @@ inline std::uint32_t obj_vertex_index(LineScanner& s, std::int64_t defined) {
   s.fail("vertex index 0 is out of range (OBJ indices start at 1)");
 }
 
+/// The check that `obj_vertex_index` leaves to the end of the file: every index of the `count` lists
+/// (`list(i)` for list i, read at line `lines[i]`) is below `num_vertices`. Throws IoError naming `name`, the
+/// line and the index as the file writes it (1-based).
+template <class List>
+void check_obj_indices(std::size_t count, const List& list, std::span<const std::size_t> lines,
+                       std::size_t num_vertices, const std::string& name) {
+  for (std::size_t i = 0; i < count; ++i) {
+    for (std::uint32_t v : list(i)) {
+      if (v >= num_vertices) {
+        throw IoError("vertex index " + std::to_string(std::uint64_t{v} + 1) +
+                          " is out of range (there are " + std::to_string(num_vertices) + " vertices)",
+                      name, lines[i]);
+      }
+    }
+  }
+}
+
 /// Converts between the host's byte order and `order` (a no-op when they agree).
 template <std::endian order, class T>
 T with_byte_order(T value) {

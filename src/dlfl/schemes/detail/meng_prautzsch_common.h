@@ -1,7 +1,7 @@
 #pragma once
-// What the Meng-Prautzsch schemes H and P share: the per-element random choices (the paper, section 1.2,
-// tried choosing the ratio of every edge and the offset of every face independently), portable and
-// reproducible, and the checks of their common parameters.
+// What the Meng-Prautzsch schemes H and P share: their parameters, the per-element random choices (the paper,
+// section 1.2, tried choosing the ratio of every edge and the offset of every face independently), portable
+// and reproducible, the checks of their input and parameters, and the layout of their output faces.
 
 #include <cmath>
 #include <cstdint>
@@ -42,6 +42,19 @@ class MpRandom {
 
  private:
   std::mt19937_64 engine_;
+};
+
+/// The parameters of one step of H or P. What tau and ratio mean differs between the two: see
+/// MpHoneycombParams and MpPushingParams.
+struct MpStepParams {
+  /// In (0, 1).
+  double tau = 0.5;
+  /// Positive and finite; 1 is the symmetric choice.
+  double ratio = 1.0;
+  /// The centre (the paper's origin), strictly inside; by default the vertex centroid.
+  std::optional<glm::dvec3> center;
+  /// Random per-element ratios and taus instead of `ratio` and `tau`.
+  MpRandomChoice random;
 };
 
 namespace detail {
@@ -108,6 +121,38 @@ inline MpChoices mp_choices(std::size_t edges, std::size_t elements, double rati
   }
   return c;
 }
+
+/// The start of an H or P step (`scheme` names it in messages): the parameters checked (`check_mp_params`),
+/// the input read by dense handles, the centre (the given one, or the input's vertex centroid), the input
+/// checked to be a closed, strictly convex polyhedron around it (`require_convex_polyhedron`) whose result
+/// (4E edges) fits 32-bit handles, and the per-element choices (`mp_choices`), with a tau per face (H) or per
+/// vertex (P). Not copied: `mesh()` may be its own compacted copy of the input.
+class MpStepInput {
+ public:
+  MpStepInput(const char* scheme, const Mesh& input, const MpStepParams& params, ElementKind taus_per);
+  MpStepInput(const MpStepInput&) = delete;
+  MpStepInput& operator=(const MpStepInput&) = delete;
+
+  /// The input, handles 0 .. count-1.
+  const Mesh& mesh() const { return *mesh_; }
+  const glm::dvec3& center() const { return center_; }
+  const MpChoices& choices() const { return choices_; }
+
+ private:
+  std::optional<Mesh> storage_;
+  const Mesh* mesh_ = nullptr;
+  glm::dvec3 center_{0.0};
+  MpChoices choices_;
+};
+
+/// The face layout of an H or P result on dense `m`: first a copy of every input face (H's f-faces, P's
+/// central faces), in face order and corner for corner (`position[c]` is the output corner made from input
+/// corner c), then `count` faces of `size` corners each (H: a hexagon per edge, P: a triangle per corner).
+struct MpFaceLayout {
+  std::vector<std::uint32_t> offsets;
+  std::vector<std::uint32_t> position;
+};
+MpFaceLayout mp_face_layout(const Mesh& m, std::uint32_t count, std::uint32_t size);
 
 }  // namespace detail
 }  // namespace dlfl

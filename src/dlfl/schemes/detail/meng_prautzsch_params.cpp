@@ -1,5 +1,6 @@
 #include <dlfl/schemes/detail/meng_prautzsch_params.h>
 
+#include <limits>
 #include <string>
 
 namespace dlfl::detail {
@@ -37,6 +38,25 @@ MpRandomChoice mp_random_from(const Params& p) {
   r.epsilon = p.number("epsilon");
   r.seed = static_cast<std::uint64_t>(p.integer("seed"));
   return r;
+}
+
+std::vector<ParamSpec> mp_step_param_specs(const char* tau, std::string tau_doc, const char* ratio,
+                                           std::string ratio_doc) {
+  const MpStepParams d;
+  return {
+      param(tau, ParamType::number, d.tau, std::move(tau_doc)).in_open(0, 1),
+      param(ratio, ParamType::number, d.ratio, std::move(ratio_doc))
+          .range(0, std::numeric_limits<double>::infinity(), true, true),
+  };
+}
+
+MpStepParams mp_step_params_from(const Params& p, const char* tau, const char* ratio) {
+  MpStepParams s;
+  s.tau = p.number(tau);
+  s.ratio = p.number(ratio);
+  s.center = mp_center_from(p);
+  s.random = mp_random_from(p);
+  return s;
 }
 
 }  // namespace dlfl::detail

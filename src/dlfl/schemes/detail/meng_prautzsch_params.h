@@ -4,10 +4,13 @@
 
 #include <glm/vec3.hpp>
 #include <optional>
+#include <string>
+#include <utility>
 #include <vector>
 
 #include <dlfl/parameters.h>
 #include <dlfl/schemes/detail/meng_prautzsch_common.h>
+#include <dlfl/schemes/scheme_registry.h>
 
 namespace dlfl::detail {
 
@@ -19,5 +22,30 @@ std::optional<glm::dvec3> mp_center_from(const Params& resolved);
 
 /// The random choices of a resolved set.
 MpRandomChoice mp_random_from(const Params& resolved);
+
+/// A step's tau, in (0, 1), and ratio, in (0, inf), with the defaults of MpStepParams, declared under the
+/// given names ("tau" and "ratio"; MHP has one pair per kind of step).
+std::vector<ParamSpec> mp_step_param_specs(const char* tau, std::string tau_doc, const char* ratio,
+                                           std::string ratio_doc);
+
+/// A step's parameters from a resolved set: tau and ratio under the given names, the centre and the random
+/// choices.
+MpStepParams mp_step_params_from(const Params& resolved, const char* tau, const char* ratio);
+
+/// The declaration of H or P: tau and ratio, then the shared parameters; `step` (`mp_honeycomb` or
+/// `mp_pushing`) runs on them.
+template <class StepParams>
+SchemeSpec mp_step_scheme(Mesh (*step)(const Mesh&, const StepParams&, Origins*), std::string name,
+                          std::string doc, std::string tau_doc, std::string ratio_doc) {
+  SchemeSpec spec;
+  spec.name = std::move(name);
+  spec.doc = std::move(doc);
+  spec.params = mp_step_param_specs("tau", std::move(tau_doc), "ratio", std::move(ratio_doc));
+  for (ParamSpec& s : mp_shared_param_specs()) spec.params.push_back(std::move(s));
+  spec.apply = [step](const Mesh& mesh, const Params& p, Origins* origins) {
+    return step(mesh, StepParams{mp_step_params_from(p, "tau", "ratio")}, origins);
+  };
+  return spec;
+}
 
 }  // namespace dlfl::detail

@@ -4,6 +4,7 @@
 // Composite schemes (dual-honeycomb-dual, MLCA after a split, MHP) chain the maps of their steps with
 // `compose`, which needs the origins of a step's corners as well when the next step's origins name corners.
 
+#include <concepts>
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -35,9 +36,14 @@ void reset_origins(Origins& origins, const Mesh& output);
 
 /// Sets the origin of every live edge of `output` to `of_corner(k)`, k the index of the edge's side-0 corner
 /// (the origin of the edge leaving output corner k).
-template <class OfCorner>
+template <std::invocable<std::uint32_t> OfCorner>
 void set_edge_origins(Origins& origins, const Mesh& output, const OfCorner& of_corner) {
   for (EdgeId e : output.edges()) origins.edges[e.index()] = of_corner(output.corner(e, 0).index());
+}
+
+/// The same from a table of the origin of the edge leaving each output corner, by corner index.
+inline void set_edge_origins(Origins& origins, const Mesh& output, std::span<const Origin> edge_of) {
+  set_edge_origins(origins, output, [edge_of](std::uint32_t k) { return edge_of[k]; });
 }
 
 /// An origin that names an element of an intermediate mesh M, taken back to M's own origin: `earlier` says

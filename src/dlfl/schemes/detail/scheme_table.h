@@ -11,8 +11,8 @@
 namespace dlfl::detail {
 
 /// The declaration of a scheme without parameters, whose step is `step(mesh, origins)`.
-inline SchemeSpec parameterless_scheme(std::string name, std::string doc,
-                                       Mesh (*step)(const Mesh&, Origins*)) {
+inline SchemeSpec parameterless_scheme(Mesh (*step)(const Mesh&, Origins*), std::string name,
+                                       std::string doc) {
   SchemeSpec spec;
   spec.name = std::move(name);
   spec.doc = std::move(doc);

@@ -1,0 +1,23 @@
+#include "editor_session.h"
+
+#include <dlfl/history/oplog.h>
+#include <dlfl/io/mesh_io.h>
+
+namespace dlfl::tool {
+
+Editor open_editor(const std::string& in, bool self_contained) {
+  Editor::Options options;
+  options.embed_meshes = self_contained;
+  Editor editor(options);
+  editor.set_mesh(read_mesh(in), in);
+  return editor;
+}
+
+void save_editor(const Editor& editor, const std::string& out, bool ascii, const std::string& log) {
+  WriteOptions write;
+  write.binary_ply = !ascii;
+  write_mesh(editor.mesh(), out, write);
+  if (!log.empty()) write_log(editor, log);
+}
+
+}  // namespace dlfl::tool
