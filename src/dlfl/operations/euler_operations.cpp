@@ -15,6 +15,16 @@ void put(Params& out, const char* name, H h) {
 
 glm::dvec3 midpoint(const Mesh& m, EdgeId e) { return 0.5 * (m.position(m.from(e)) + m.position(m.to(e))); }
 
+// An operator that removes one vertex, given as its only parameter (delete_vertex, unsubdivide_edge).
+OperationSpec vertex_removal(const char* name, const char* doc, const char* vertex_doc, const char* counts,
+                             void (Transaction::*remove)(VertexId)) {
+  return edit_operation(name, doc, {param("vertex", ParamType::vertex, vertex_doc)}, counts,
+                        [remove](Transaction& tx, const Params& p) {
+                          (tx.*remove)(p.handle<VertexId>("vertex"));
+                          return Params{};
+                        });
+}
+
 }  // namespace
 
 std::vector<OperationSpec> euler_operation_specs() {
@@ -29,12 +39,8 @@ std::vector<OperationSpec> euler_operation_specs() {
         return out;
       }));
 
-  ops.push_back(edit_operation("delete_vertex", "inverse of CREATEVERTEX: removes a point sphere (no edge)",
-                               {param("vertex", ParamType::vertex, "the point sphere's vertex")},
-                               "V-1, E+0, F-1", [](Transaction& tx, const Params& p) {
-                                 tx.delete_vertex(p.handle<VertexId>("vertex"));
-                                 return Params{};
-                               }));
+  ops.push_back(vertex_removal("delete_vertex", "inverse of CREATEVERTEX: removes a point sphere (no edge)",
+                               "the point sphere's vertex", "V-1, E+0, F-1", &Transaction::delete_vertex));
 
   ops.push_back(edit_operation(
       "insert_edge",
@@ -76,12 +82,9 @@ std::vector<OperationSpec> euler_operation_specs() {
         return out;
       }));
 
-  ops.push_back(edit_operation("unsubdivide_edge", "inverse of subdivide_edge: removes a 2-valent vertex",
-                               {param("vertex", ParamType::vertex, "the 2-valent vertex to remove")},
-                               "V-1, E-1, F+0", [](Transaction& tx, const Params& p) {
-                                 tx.unsubdivide_edge(p.handle<VertexId>("vertex"));
-                                 return Params{};
-                               }));
+  ops.push_back(vertex_removal("unsubdivide_edge", "inverse of subdivide_edge: removes a 2-valent vertex",
+                               "the 2-valent vertex to remove", "V-1, E-1, F+0",
+                               &Transaction::unsubdivide_edge));
 
   ops.push_back(edit_operation("set_position", "moves a vertex",
                                {param("vertex", ParamType::vertex, "the vertex to move"),

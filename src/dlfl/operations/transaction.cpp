@@ -23,6 +23,13 @@ struct Reverter {
   }
 };
 
+// The step of `kind` on vertex v (delete_vertex, unsubdivide_edge).
+Step vertex_step(Step::Kind kind, VertexId v) {
+  Step step{kind};
+  step.vertex = v;
+  return step;
+}
+
 }  // namespace
 
 void ChangeRecord::revert(Mesh& mesh) {
@@ -51,43 +58,25 @@ Transaction::~Transaction() {
 
 VertexId Transaction::create_vertex(const glm::dvec3& position) {
   const VertexId v = mesh_.create_vertex(position);
-  Step inverse{Step::Kind::delete_vertex};
-  inverse.vertex = v;
-  record_.inverses_.push_back(inverse);
+  record_.inverses_.push_back(vertex_step(Step::Kind::delete_vertex, v));
   return v;
 }
 
-void Transaction::delete_vertex(VertexId v) {
-  Step step{Step::Kind::delete_vertex};
-  step.vertex = v;
-  apply(step);
-}
+void Transaction::delete_vertex(VertexId v) { apply(vertex_step(Step::Kind::delete_vertex, v)); }
 
 InsertEdgeResult Transaction::insert_edge(CornerId c1, CornerId c2) {
-  InsertEdgeResult r = mesh_.insert_edge(c1, c2);
-  record_.inverses_.push_back(r.inverse);
-  return r;
+  return recorded(mesh_.insert_edge(c1, c2));
 }
 
-DeleteEdgeResult Transaction::delete_edge(EdgeId e) {
-  DeleteEdgeResult r = mesh_.delete_edge(e);
-  record_.inverses_.push_back(r.inverse);
-  return r;
-}
+DeleteEdgeResult Transaction::delete_edge(EdgeId e) { return recorded(mesh_.delete_edge(e)); }
 
 VertexId Transaction::subdivide_edge(EdgeId e, const glm::dvec3& position) {
   const VertexId v = mesh_.subdivide_edge(e, position);
-  Step inverse{Step::Kind::unsubdivide_edge};
-  inverse.vertex = v;
-  record_.inverses_.push_back(inverse);
+  record_.inverses_.push_back(vertex_step(Step::Kind::unsubdivide_edge, v));
   return v;
 }
 
-void Transaction::unsubdivide_edge(VertexId v) {
-  Step step{Step::Kind::unsubdivide_edge};
-  step.vertex = v;
-  apply(step);
-}
+void Transaction::unsubdivide_edge(VertexId v) { apply(vertex_step(Step::Kind::unsubdivide_edge, v)); }
 
 void Transaction::set_position(VertexId v, const glm::dvec3& position) {
   Step step{Step::Kind::set_position};
@@ -107,11 +96,8 @@ FaceManifold Transaction::create_face_manifold(std::span<const glm::dvec3> posit
   const auto n = static_cast<std::uint32_t>(positions.size());
   // Inverses in the order of the primitives (N create_vertex, then N insert_edge): reverting deletes the
   // edges last to first, then the point spheres.
-  for (std::uint32_t i = 0; i < n; ++i) {
-    Step s{Step::Kind::delete_vertex};
-    s.vertex = VertexId(first_vertex + i);
-    record_.inverses_.push_back(s);
-  }
+  for (std::uint32_t i = 0; i < n; ++i)
+    record_.inverses_.push_back(vertex_step(Step::Kind::delete_vertex, VertexId(first_vertex + i)));
   for (std::uint32_t i = 0; i < n; ++i) {
     Step s{Step::Kind::delete_edge};
     s.edge = EdgeId(first_edge + i);

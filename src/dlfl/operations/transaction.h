@@ -105,6 +105,13 @@ class Transaction {
   void rollback();
 
  private:
+  // Records the inverse an operator returned with its result.
+  template <class Result>
+  Result recorded(Result result) {
+    record_.inverses_.push_back(result.inverse);
+    return result;
+  }
+
   Mesh& mesh_;
   ChangeRecord record_;
   bool committed_ = false;
