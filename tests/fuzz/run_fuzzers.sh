@@ -7,8 +7,9 @@
 #   tests/fuzz/run_fuzzers.sh [SECONDS] [HARNESS ...]
 #
 # Environment: DLFL_FUZZ_BUILD (build folder, default build-fuzz), DLFL_FUZZ_OUT (output folder, default a
-# new mktemp -d). New inputs are left in OUT/NAME/ for merging by hand (docs/fuzzing.md); a finding leaves
-# OUT/NAME-crash-..., -timeout-..., -oom-... and the log OUT/NAME.log.
+# new mktemp -d), DLFL_FUZZ_JOBS (harnesses run at the same time, default 1: each takes one core). New inputs
+# are left in OUT/NAME/ for merging by hand (docs/fuzzing.md); a finding leaves OUT/NAME-crash-...,
+# -timeout-... or -oom-... and the log OUT/NAME.log.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 seconds=${1:-30}
@@ -16,7 +17,7 @@ shift || true
 build=${DLFL_FUZZ_BUILD:-build-fuzz}
 if [ ! -f "$build/CMakeCache.txt" ]; then
   cmake -S . -B "$build" -DCMAKE_CXX_COMPILER=clang++-14 -DDLFL_FUZZ=ON -DDLFL_SANITIZE=address,undefined \
-    -DDLFL_BUILD_TESTS=OFF -DDLFL_BUILD_TOOLS=OFF -DDLFL_BUILD_BENCH=OFF
+    -DDLFL_BUILD_TESTS=OFF -DDLFL_BUILD_TOOLS=OFF -DDLFL_BUILD_BENCH=OFF -DDLFL_BUILD_EXAMPLES=OFF
 fi
 cmake --build "$build" -j2
 out=${DLFL_FUZZ_OUT:-$(mktemp -d "${TMPDIR:-/tmp}/dlfl-fuzz.XXXXXX")}
@@ -37,28 +38,51 @@ max_len() {
   esac
 }
 
+# Runs one harness; its result line goes to OUT/NAME.result.
+run_one() {
+  local h=$1
+  rm -rf "${out:?}/$h"
+  mkdir -p "$out/$h"
+  local inputs=("$out/$h" "tests/fuzz/corpus/$h")  # the first folder receives the new inputs
+  [ -d "tests/fuzz/regressions/$h" ] && inputs+=("tests/fuzz/regressions/$h")
+  local options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="$(max_len "$h")"
+                 -print_final_stats=1 -artifact_prefix="$out/$h-")
+  [ -f "tests/fuzz/$h.dict" ] && options+=(-dict="tests/fuzz/$h.dict")
+  local start status=0 executions
+  start=$(date +%s)
+  "$build/bin/dlfl_fuzz_$h" "${options[@]}" "${inputs[@]}" >"$out/$h.log" 2>&1 || status=$?
+  executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/$h.log" | tail -1)
+  {
+    printf '%-14s %12s %8s' "$h" "${executions:-?}" "$(($(date +%s) - start))"
+    if [ $status -ne 0 ]; then
+      printf '  FAILED (exit %s): see %s\n' "$status" "$out/$h.log"
+      grep -E 'ERROR|SUMMARY|dlfl fuzz finding|terminate called|Test unit written' "$out/$h.log" | head -5 || true
+    else
+      printf '\n'
+    fi
+  } >"$out/$h.result"
+  return $status
+}
+
+# DLFL_FUZZ_JOBS harnesses at a time (default 1); each is one process on one core.
+jobs=${DLFL_FUZZ_JOBS:-1}
+running=0
+for h in $harnesses; do
+  rm -f "$out/$h.result"
+  run_one "$h" &
+  running=$((running + 1))
+  if [ "$running" -ge "$jobs" ]; then
+    wait -n || true
+    running=$((running - 1))
+  fi
+done
+wait || true
+
 failed=""
 printf '%-14s %12s %8s\n' harness executions seconds
 for h in $harnesses; do
-  rm -rf "${out:?}/$h"
-  mkdir -p "$out/$h"
-  inputs=("$out/$h" "tests/fuzz/corpus/$h")  # the first folder receives the new inputs
-  [ -d "tests/fuzz/regressions/$h" ] && inputs+=("tests/fuzz/regressions/$h")
-  options=(-max_total_time="$seconds" -timeout=10 -rss_limit_mb=2048 -max_len="$(max_len "$h")"
-           -print_final_stats=1 -artifact_prefix="$out/$h-")
-  [ -f "tests/fuzz/$h.dict" ] && options+=(-dict="tests/fuzz/$h.dict")
-  start=$(date +%s)
-  status=0
-  "$build/bin/dlfl_fuzz_$h" "${options[@]}" "${inputs[@]}" >"$out/$h.log" 2>&1 || status=$?
-  executions=$(sed -n 's/^stat::number_of_executed_units: *//p' "$out/$h.log" | tail -1)
-  printf '%-14s %12s %8s' "$h" "${executions:-?}" "$(($(date +%s) - start))"
-  if [ $status -ne 0 ]; then
-    failed="$failed $h"
-    printf '  FAILED (exit %s): see %s\n' "$status" "$out/$h.log"
-    grep -E 'ERROR|SUMMARY|dlfl fuzz finding|Test unit written' "$out/$h.log" | head -5 || true
-  else
-    printf '\n'
-  fi
+  cat "$out/$h.result"
+  grep -q FAILED "$out/$h.result" && failed="$failed $h"
 done
 echo "output corpus and logs: $out"
 if [ -n "$failed" ]; then
