@@ -2,9 +2,9 @@
 
 #include <iostream>
 
-#include "commands.h"
-#include <dlfl/validate.h>
 #include <dlfl/io/mesh_io.h>
+#include <dlfl/validate.h>
+#include "commands.h"
 
 namespace dlfl::tool {
 
@@ -12,9 +12,13 @@ Action add_check(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("check", "Validate the DLFL structure; exit 0 if valid, 1 with the violations");
   auto path = std::make_shared<std::string>();
-  cmd->add_option("MESH", *path, "Mesh file (.obj, .off, .ply)")->required();
+  cmd->add_option(
+         "MESH", *path,
+         "Mesh file (.obj, .off, .ply, .json). A .json file may hold any DLFL state: every violation "
+         "is listed. The other formats are refused by their reader with the line at fault")
+      ->required();
   return [path] {
-    const ValidationReport report = validate(read_mesh(*path));
+    const ValidationReport report = validate_mesh_file(*path);
     if (report.valid()) {
       std::cout << "valid: " << report.components.size() << " component(s)\n";
       return ok;

@@ -1,9 +1,10 @@
 // dlfl convert IN OUT: format by extension. Cell complexes (.vtk, .obj with points or curves) convert between
 // .vtk and .obj.
 
-#include "commands.h"
 #include <dlfl/cells/cell_io.h>
 #include <dlfl/io/mesh_io.h>
+#include "commands.h"
+#include "file_checks.h"
 
 namespace dlfl::tool {
 
@@ -18,6 +19,7 @@ Action add_convert(CLI::App& app) {
   cmd->add_option("OUT", *out, "Output mesh")->required();
   cmd->add_flag("--ascii", *ascii, "Write PLY or VTK as ASCII instead of binary");
   return [in, out, ascii] {
+    check_files({{"IN", *in}}, {{"OUT", *out}});
     if (is_cell_complex_file(*in)) {
       CellWriteOptions options;
       options.binary_vtk = !*ascii;

@@ -7,12 +7,17 @@
 #include <new>
 
 #include <dlfl/errors.h>
+#include <dlfl/io/atomic_file.h>
 #include "commands.h"
+#include "file_checks.h"
 
 int main(int argc, char** argv) {
   using namespace dlfl::tool;
   CLI::App app{"dlfl: topological modelling on the Doubly Linked Face List"};
+  app.set_version_flag("--version", std::string("dlfl ") + DLFL_VERSION);
   app.require_subcommand(1);
+  // A stopped run leaves no temporary file: outputs are written beside their targets, then renamed.
+  dlfl::remove_temporary_files_on_signals();
   std::map<const CLI::App*, Action> actions;
   auto add = [&](Action (*adder)(CLI::App&)) {
     Action a = adder(app);
@@ -35,6 +40,9 @@ int main(int argc, char** argv) {
   } catch (const CLI::CallForAllHelp&) {
     std::cout << app.help("", CLI::AppFormatMode::All);
     return ok;
+  } catch (const CLI::CallForVersion& e) {
+    std::cout << e.what() << "\n";
+    return ok;
   } catch (const CLI::ParseError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return usage;
@@ -43,6 +51,9 @@ int main(int argc, char** argv) {
     for (const CLI::App* sub : app.get_subcommands()) return actions.at(sub)();
   } catch (const dlfl::UnknownNameError& e) {
     // An unknown operation, scheme or parameter, or a malformed value: the command line is at fault.
+    std::cerr << "error: " << e.what() << "\n";
+    return usage;
+  } catch (const UsageError& e) {
     std::cerr << "error: " << e.what() << "\n";
     return usage;
   } catch (const dlfl::ParameterError& e) {

@@ -8,6 +8,7 @@
 #include <dlfl/operations/operation_text.h>
 #include "commands.h"
 #include "editor_session.h"
+#include "file_checks.h"
 
 namespace dlfl::tool {
 
@@ -34,6 +35,7 @@ Action add_edit(CLI::App& app) {
                 "Embed the input mesh in the log so it replays anywhere");
   cmd->add_flag("--ascii", a->ascii, "Write PLY as ASCII instead of binary");
   return [a] {
+    check_files({{"IN", a->in}}, {{"-o", a->out}, {"--log", a->log}});
     // Every op string is parsed before the input is read: a typo costs nothing.
     std::vector<std::pair<std::string, Params>> ops;
     for (const auto& text : a->ops) ops.push_back(parse_operation_text(text));

@@ -1,6 +1,7 @@
 #include "editor_session.h"
 
 #include <dlfl/history/oplog.h>
+#include <dlfl/io/atomic_file.h>
 #include <dlfl/io/mesh_io.h>
 
 namespace dlfl::tool {
@@ -14,10 +15,14 @@ Editor open_editor(const std::string& in, bool self_contained) {
 }
 
 void save_editor(const Editor& editor, const std::string& out, bool ascii, const std::string& log) {
+  // Both files or neither: each is staged, and only when both are complete do they replace their targets.
+  FileBatch batch;
   WriteOptions write;
   write.binary_ply = !ascii;
+  write.batch = &batch;
   write_mesh(editor.mesh(), out, write);
-  if (!log.empty()) write_log(editor, log);
+  if (!log.empty()) write_log(editor, log, &batch);
+  batch.commit();
 }
 
 }  // namespace dlfl::tool

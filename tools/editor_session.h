@@ -12,7 +12,7 @@ namespace dlfl::tool {
 Editor open_editor(const std::string& in, bool self_contained);
 
 /// Writes the editor's mesh to `out` (binary PLY unless `ascii`) and, unless `log` is empty, its operation
-/// log there.
+/// log there: both or neither (a FileBatch), no temporary file left on failure.
 void save_editor(const Editor& editor, const std::string& out, bool ascii, const std::string& log);
 
 }  // namespace dlfl::tool

@@ -4,15 +4,15 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 
-#include "commands.h"
+#include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/analysis/polyhedron_angles.h>
+#include <dlfl/cells/cell_io.h>
 #include <dlfl/errors.h>
+#include <dlfl/io/mesh_io.h>
 #include <dlfl/mesh_hash.h>
 #include <dlfl/statistics.h>
 #include <dlfl/validate.h>
-#include <dlfl/cells/cell_io.h>
-#include <dlfl/io/mesh_io.h>
-#include <dlfl/analysis/convex_polyhedron.h>
-#include <dlfl/analysis/polyhedron_angles.h>
+#include "commands.h"
 
 namespace dlfl::tool {
 

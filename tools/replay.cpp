@@ -5,6 +5,7 @@
 #include <dlfl/history/oplog.h>
 #include <dlfl/io/mesh_io.h>
 #include "commands.h"
+#include "file_checks.h"
 
 namespace dlfl::tool {
 
@@ -18,6 +19,7 @@ Action add_replay(CLI::App& app) {
       ->required();
   cmd->add_flag("--ascii", *ascii, "Write PLY as ASCII instead of binary little-endian");
   return [log, out, ascii] {
+    check_files({{"LOG", *log}}, {{"-o", *out}});
     const Editor editor = replay_log_file(*log);  // nothing is written unless the whole log replays
     WriteOptions write;
     write.binary_ply = !*ascii;

@@ -11,6 +11,7 @@
 #include <dlfl/schemes/scheme_registry.h>
 #include "commands.h"
 #include "editor_session.h"
+#include "file_checks.h"
 
 namespace dlfl::tool {
 
@@ -67,6 +68,7 @@ Action add_subdivide(CLI::App& app) {
                 "Embed the input mesh in the log so it replays anywhere");
   cmd->add_flag("--ascii", a->ascii, "Write PLY or VTK as ASCII instead of binary");
   return [a] {
+    check_files({{"IN", a->in}}, {{"-o", a->out}, {"--log", a->log}});
     if (is_cell_complex_file(a->in)) return subdivide_cells(*a);
     Params params;
     for (const auto& p : a->params) {

@@ -39,6 +39,21 @@ MeshArrays MeshArrays::from(const Mesh& m) {
 }
 
 Mesh MeshArrays::to_mesh() const {
+  Mesh m = unvalidated_mesh();
+  const ValidationReport report = dlfl::validate(m, 1);
+  if (!report.valid()) {
+    const Violation& v = report.violations.front();
+    throw TopologyError("mesh arrays: not a valid DLFL: " + v.element + ": " + v.message + " (" +
+                        to_string(v.code) + ")");
+  }
+  return m;
+}
+
+ValidationReport MeshArrays::validate(std::size_t max_violations) const {
+  return dlfl::validate(unvalidated_mesh(), max_violations);
+}
+
+Mesh MeshArrays::unvalidated_mesh() const {
   // Range checks first: the validator relies on live elements pointing at slots that exist.
   auto in_range = [](auto h, std::size_t n) { return !h.valid() || h.index() < n; };
   auto fail = [](const std::string& what) { throw TopologyError("mesh arrays: " + what); };
@@ -108,11 +123,6 @@ Mesh MeshArrays::to_mesh() const {
         typed.slot(i) = *value;
       }
     });
-  }
-  const ValidationReport report = validate(m, 1);
-  if (!report.valid()) {
-    const Violation& v = report.violations.front();
-    fail("not a valid DLFL: " + v.element + ": " + v.message + " (" + to_string(v.code) + ")");
   }
   return m;
 }

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <dlfl/mesh.h>
+#include <dlfl/validate.h>
 
 namespace dlfl {
 
@@ -56,6 +57,14 @@ struct MeshArrays {
   /// attribute needs a non-empty name unique for its kind, one value per slot, all of its default's type.
   /// Otherwise throws TopologyError naming the first problem. O(size).
   Mesh to_mesh() const;
+  /// The validator's report (at most `max_violations` listed) on the mesh these arrays describe, for a tool
+  /// that shows what is wrong with a saved state. Handles must be in range, as for `to_mesh`, which throws
+  /// TopologyError otherwise. O(size).
+  ValidationReport validate(std::size_t max_violations = 100) const;
+
+ private:
+  // The mesh of the arrays after the range and attribute checks, not yet validated.
+  Mesh unvalidated_mesh() const;
 };
 
 }  // namespace dlfl

@@ -179,9 +179,14 @@ std::string log_text(const Editor& editor) {
   }
 }
 
-void write_log(const Editor& editor, const std::filesystem::path& path) {
+void write_log(const Editor& editor, const std::filesystem::path& path, FileBatch* batch) {
   const std::string text = log_text(editor);
-  write_atomically(path, [&](std::ostream& out) { out << text << '\n'; });
+  const auto write = [&](std::ostream& out) { out << text << '\n'; };
+  if (batch) {
+    batch->stage(path, write);
+  } else {
+    write_atomically(path, write);
+  }
 }
 
 Editor replay_log(std::string_view text, const std::string& name) {

@@ -13,6 +13,8 @@
 
 namespace dlfl {
 
+class FileBatch;
+
 /// The log version this library writes. Version 1 logs (written before the operation registry) still replay.
 inline constexpr int oplog_version = 2;
 
@@ -33,8 +35,9 @@ class LogError : public IoError {
 /// The editor's session as log text (JSON, one op per entry).
 std::string log_text(const Editor& editor);
 
-/// Writes `log_text(editor)` to a file atomically.
-void write_log(const Editor& editor, const std::filesystem::path& path);
+/// Writes `log_text(editor)` to a file atomically; with a `batch`, only stages it there (io/atomic_file.h),
+/// to be replaced when the batch commits, together with its other files.
+void write_log(const Editor& editor, const std::filesystem::path& path, FileBatch* batch = nullptr);
 
 /// Replays log text in a fresh editor (with the log's undo limit) and returns it; `name` is used in
 /// messages. Every op's parameters are checked against its declaration before it runs. Throws LogError for

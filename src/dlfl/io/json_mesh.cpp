@@ -248,7 +248,10 @@ nlohmann::json mesh_to_json(const Mesh& mesh) {
   return doc;
 }
 
-Mesh mesh_from_json(const nlohmann::json& doc, const std::string& name) {
+namespace {
+
+// The arrays of a document, every field checked but the structure not yet validated.
+MeshArrays arrays_from_json(const nlohmann::json& doc, const std::string& name) {
   Reader r(doc, name);
   if (!doc.is_object()) r.fail("(document)", "expected a JSON object");
   auto format = doc.find("format");
@@ -323,6 +326,13 @@ Mesh mesh_from_json(const nlohmann::json& doc, const std::string& name) {
     }
     a.attributes.push_back(std::move(at));
   }
+  return a;
+}
+
+}  // namespace
+
+Mesh mesh_from_json(const nlohmann::json& doc, const std::string& name) {
+  const MeshArrays a = arrays_from_json(doc, name);
   try {
     return a.to_mesh();
   } catch (const TopologyError& e) {
@@ -363,6 +373,16 @@ nlohmann::json value_to_json(const Value& v) {
     }
   }
   return nullptr;
+}
+
+ValidationReport validate_json_mesh(const nlohmann::json& doc, const std::string& name,
+                                    std::size_t max_violations) {
+  const MeshArrays a = arrays_from_json(doc, name);
+  try {
+    return a.validate(max_violations);
+  } catch (const TopologyError& e) {
+    throw IoError(e.what(), name);
+  }
 }
 
 }  // namespace dlfl

@@ -8,6 +8,7 @@
 
 #include <dlfl/mesh.h>
 #include <dlfl/parameters.h>
+#include <dlfl/validate.h>
 
 namespace dlfl {
 
@@ -20,6 +21,12 @@ nlohmann::json mesh_to_json(const Mesh& mesh);
 /// missing or mistyped field, an out-of-range handle, a structure that fails validation). The "face_points"
 /// array of older documents becomes the "face_point" face attribute.
 Mesh mesh_from_json(const nlohmann::json& doc, const std::string& name);
+
+/// The validator's report on the structure a document describes, which may be any DLFL state: every field
+/// is checked as by `mesh_from_json` (IoError), but a structure that fails validation is reported, with up to
+/// `max_violations` violations listed, instead of refused.
+ValidationReport validate_json_mesh(const nlohmann::json& doc, const std::string& name,
+                                    std::size_t max_violations = 100);
 
 /// A parameter value as JSON, typed by its kind: null when empty, true, 1, 0.5, "text", [x, y, z], lists as
 /// arrays, a mesh as its document (above), a parameter set as an object. Operation logs write values so,

@@ -42,10 +42,39 @@ Mesh build_mesh(const ParsedPolygons& parsed, const std::string& name) {
   }
 }
 
-Mesh read_mesh(const std::filesystem::path& path) {
-  const MeshFormat format = format_for_path(path);
-  const std::string name = path.string();
-  const std::string text = io_detail::read_file(path);
+namespace {
+
+// A byte that no text file holds: NUL and the other C0 controls but \t \n \v \f \r, and DEL. Bytes from
+// 0x80 up are allowed (UTF-8 in comments and names).
+bool is_binary_byte(unsigned char c) { return (c < 0x20 && !(c >= '\t' && c <= '\r')) || c == 0x7f; }
+
+// Refuses text with a binary byte, naming its line (1-based).
+void check_text(std::string_view text, const std::string& name) {
+  const auto it = std::find_if(text.begin(), text.end(),
+                               [](char c) { return is_binary_byte(static_cast<unsigned char>(c)); });
+  if (it == text.end()) return;
+  const auto line = static_cast<std::size_t>(std::count(text.begin(), it, '\n')) + 1;
+  throw IoError("binary data at line " + std::to_string(line) + " (byte " +
+                    std::to_string(static_cast<unsigned>(static_cast<unsigned char>(*it))) +
+                    "): not a text file",
+                name, line);
+}
+
+// A PLY file is text up to the end of its header; a binary one goes on in binary.
+std::string_view ply_header(std::string_view text) {
+  const std::size_t end = text.find("end_header");
+  return end == std::string_view::npos ? text : text.substr(0, end);
+}
+
+Mesh with_vertices(Mesh mesh, const std::string& name) {
+  if (mesh.num_vertices() == 0) throw IoError("no vertices: the file holds no mesh", name);
+  return mesh;
+}
+
+Mesh read_mesh_text(MeshFormat format, const std::string& text, const std::string& name) {
+  check_text(format == MeshFormat::ply ? ply_header(text) : std::string_view(text), name);
+  if (text.find_first_not_of(" \t\n\v\f\r") == std::string::npos)
+    throw IoError("no vertices: the file is empty", name);
   switch (format) {
     case MeshFormat::obj:
       return build_mesh(io_detail::parse_obj_text(text, name), name);
@@ -62,17 +91,41 @@ Mesh read_mesh(const std::filesystem::path& path) {
   return build_mesh(io_detail::parse_ply_text(text, name), name);
 }
 
+}  // namespace
+
+Mesh read_mesh(const std::filesystem::path& path) {
+  const MeshFormat format = format_for_path(path);
+  const std::string name = path.string();
+  return with_vertices(read_mesh_text(format, io_detail::read_file(path), name), name);
+}
+
+ValidationReport validate_mesh_file(const std::filesystem::path& path, std::size_t max_violations) {
+  const MeshFormat format = format_for_path(path);
+  if (format != MeshFormat::json) return validate(read_mesh(path), max_violations);
+  const std::string name = path.string();
+  const std::string text = io_detail::read_file(path);
+  check_text(text, name);
+  nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+  if (doc.is_discarded())
+    throw IoError(text.empty() ? "no vertices: the file is empty" : "not valid JSON", name);
+  return validate_json_mesh(doc, name, max_violations);
+}
+
 void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {
   const MeshFormat format = format_for_path(path);
+  if (mesh.num_vertices() == 0) throw IoError("no vertices: an empty mesh makes no mesh file", path.string());
+  FileBatch own;
+  FileBatch& batch = options.batch ? *options.batch : own;
   if (format == MeshFormat::json) {
     const std::string text = mesh_to_json(mesh).dump();
-    write_atomically(path, [&](std::ostream& out) { out << text << '\n'; });
+    batch.stage(path, [&](std::ostream& out) { out << text << '\n'; });
+    if (!options.batch) own.commit();
     return;
   }
   // Converting first means a mesh that an indexed polygon file cannot hold fails before any file is touched.
   const PolygonSoup soup = to_polygons(mesh);
   const bool binary = format == MeshFormat::ply && options.binary_ply;
-  write_atomically(
+  batch.stage(
       path,
       [&](std::ostream& out) {
         switch (format) {
@@ -90,6 +143,7 @@ void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const Write
         }
       },
       binary);
+  if (!options.batch) own.commit();
 }
 
 }  // namespace dlfl
