@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <optional>
 #include <vector>
 
 #include <dlfl/dense_mesh.h>
@@ -49,13 +48,11 @@ namespace dlfl {
 // since prev(next(s)) = s, so edge(prev(next(s))) = e. So one pass over the faces fills the inner corners
 // (3c + 1 and the central triangles) and one pass over the edges fills the rest, with the edge points.
 Mesh loop(const Mesh& input, Origins* origins) {
-  // On the input, so that errors name its own handles, not compacted ones.
-  detail::require_triangles(input, "loop", "Loop subdivision", detail::TriangleHoles::allowed);
-  std::optional<Mesh> storage;
-  const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const auto [nv, ne, nf, nc] = dense_counts(m);                // nc = 3 nf
-  const std::uint32_t edge_base = nv;                           // vertex of the edge point of edge e
-  const std::uint32_t central_base = 3 * nc;                    // first corner of the central triangles
+  const detail::DenseTriangles dense(input, "loop", "Loop subdivision", detail::TriangleHoles::allowed);
+  const Mesh& m = dense.mesh();
+  const auto [nv, ne, nf, nc] = dense_counts(m);  // nc = 3 nf
+  const std::uint32_t central_base = 3 * nc;      // first corner of the central triangles
+  const std::uint32_t edge_base = nv;             // vertex of the edge point of edge e
   MeshAssembler out(std::size_t(nv) + ne, std::size_t(nc) + nf, 3);
 
   // Faces: inner corners of the corner triangles, and the central triangles.
@@ -119,10 +116,8 @@ Mesh loop(const Mesh& input, Origins* origins) {
   if (origins) {
     const detail::InputHandles in(input);
     detail::reset_origins(*origins, result);
-    for (std::uint32_t v = 0; v < nv; ++v) origins->vertices[v] = in.vertex(v);
-    for (std::uint32_t e = 0; e < ne; ++e) origins->vertices[edge_base + e] = in.edge(e);
-    for (std::uint32_t k = 0; k < nc; ++k) origins->faces[k] = in.corner(k);
-    for (std::uint32_t f = 0; f < nf; ++f) origins->faces[nc + f] = in.face(f);
+    in.fill(origins->vertices, {Origin::Kind::vertex, Origin::Kind::edge});
+    in.fill(origins->faces, {Origin::Kind::corner, Origin::Kind::face});
     // Corner 3c + i of a corner triangle: i = 0 runs along edge(c), 1 is the inner edge, 2 runs along
     // edge(prev c). A central corner is never an edge's side 0 (its twin 3c + 1 is smaller), but would name
     // its twin's corner c(j+1).
@@ -132,15 +127,7 @@ Mesh loop(const Mesh& input, Origins* origins) {
         for (std::uint32_t j = 0; j <= (k - central_base) % 3; ++j) c = m.next(c);
         return in.corner(c.index());
       }
-      const CornerId c(k / 3);
-      switch (k % 3) {
-        case 0:
-          return in.edge(m.edge(c).index());
-        case 1:
-          return in.corner(c.index());
-        default:
-          return in.edge(m.edge(m.prev(c)).index());
-      }
+      return detail::corner_polygon_side(m, in, CornerId(k / 3), k % 3, 3);
     });
   }
   return result;

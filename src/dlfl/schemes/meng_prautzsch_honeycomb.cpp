@@ -4,6 +4,7 @@
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <limits>
+#include <span>
 #include <vector>
 
 #include <dlfl/analysis/convex_polyhedron.h>
@@ -23,6 +24,41 @@ glm::dvec3 slerp(const glm::dvec3& a, const glm::dvec3& b, double s) {
   const double theta = std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
   const glm::dvec3 n = (std::sin((1.0 - s) * theta) * a + std::sin(s * theta) * b) / std::sin(theta);
   return glm::normalize(n);
+}
+
+// The origins of a step's output and of its corners (see detail::mp_honeycomb), either may be null. Out of
+// line so that the step's own loops are compiled as they are without it.
+[[gnu::noinline]] void honeycomb_origins(const Mesh& input, const Mesh& m, const Mesh& result,
+                                         std::span<const std::uint32_t> position, Origins* origins,
+                                         std::vector<Origin>* corners) {
+  const auto [nv, ne, nf, nc] = dense_counts(m);
+  // Per output corner: the origin of the corner and of its outgoing edge. In hexagon e (corners as
+  // detail::mp_honeycomb sets them) the corners at f-face vertices stem from those vertices' corners, the
+  // ones at old vertices from the side corner of e leaving them; its sides are verticals (old vertex to
+  // f-face vertex of corner x
+  // <- x) and f-face sides (of corner c <- c).
+  const detail::InputHandles in(input);
+  std::vector<Origin> corner_of(result.corner_capacity()), edge_of(result.corner_capacity());
+  for (std::uint32_t i = 0; i < nc; ++i) corner_of[position[i]] = edge_of[position[i]] = in.corner(i);
+  for (std::uint32_t e = 0; e < ne; ++e) {
+    const CornerId c0 = m.corner(EdgeId(e), 0), c1 = m.corner(EdgeId(e), 1);
+    const Origin o0 = in.corner(c0.index()), o1 = in.corner(c1.index());
+    const Origin n0 = in.corner(m.next(c0).index()), n1 = in.corner(m.next(c1).index());
+    const std::uint32_t base = nc + 6 * e;
+    const Origin corner_origins[6] = {o0, n1, o1, o1, n0, o0};
+    const Origin edge_origins[6] = {n1, o1, o1, n0, o0, o0};
+    for (int j = 0; j < 6; ++j) {
+      corner_of[base + j] = corner_origins[j];
+      edge_of[base + j] = edge_origins[j];
+    }
+  }
+  if (origins) {
+    detail::reset_origins(*origins, result);
+    in.fill(origins->vertices, {Origin::Kind::vertex, Origin::Kind::corner});
+    in.fill(origins->faces, {Origin::Kind::face, Origin::Kind::edge});
+    detail::set_edge_origins(*origins, result, edge_of);
+  }
+  if (corners) *corners = std::move(corner_of);
 }
 
 }  // namespace
@@ -120,34 +156,7 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
   Mesh result =
       detail::require_convex_result(out.finish(), step.center(), "mp-honeycomb", params.tau, params.ratio);
   if (!origins && !corners) return result;
-  // Per output corner: the origin of the corner and of its outgoing edge. In hexagon e (corners as set
-  // above) the corners at f-face vertices stem from those vertices' corners, the ones at old vertices from
-  // the side corner of e leaving them; its sides are verticals (old vertex to f-face vertex of corner x
-  // <- x) and f-face sides (of corner c <- c).
-  const detail::InputHandles in(input);
-  std::vector<Origin> corner_of(result.corner_capacity()), edge_of(result.corner_capacity());
-  for (std::uint32_t i = 0; i < nc; ++i) corner_of[position[i]] = edge_of[position[i]] = in.corner(i);
-  for (std::uint32_t e = 0; e < ne; ++e) {
-    const CornerId c0 = m.corner(EdgeId(e), 0), c1 = m.corner(EdgeId(e), 1);
-    const Origin o0 = in.corner(c0.index()), o1 = in.corner(c1.index());
-    const Origin n0 = in.corner(m.next(c0).index()), n1 = in.corner(m.next(c1).index());
-    const std::uint32_t base = nc + 6 * e;
-    const Origin corner_origins[6] = {o0, n1, o1, o1, n0, o0};
-    const Origin edge_origins[6] = {n1, o1, o1, n0, o0, o0};
-    for (int j = 0; j < 6; ++j) {
-      corner_of[base + j] = corner_origins[j];
-      edge_of[base + j] = edge_origins[j];
-    }
-  }
-  if (origins) {
-    detail::reset_origins(*origins, result);
-    for (std::uint32_t v = 0; v < nv; ++v) origins->vertices[v] = in.vertex(v);
-    for (std::uint32_t k = 0; k < nc; ++k) origins->vertices[nv + k] = in.corner(k);
-    for (std::uint32_t f = 0; f < nf; ++f) origins->faces[f] = in.face(f);
-    for (std::uint32_t e = 0; e < ne; ++e) origins->faces[nf + e] = in.edge(e);
-    detail::set_edge_origins(*origins, result, edge_of);
-  }
-  if (corners) *corners = std::move(corner_of);
+  honeycomb_origins(input, m, result, position, origins, corners);
   return result;
 }
 

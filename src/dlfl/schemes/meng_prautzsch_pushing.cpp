@@ -21,6 +21,18 @@ void check_mp_pushing_params(const MpPushingParams& p) {
   detail::check_mp_params("mp-pushing", p.tau, p.ratio, p.center, p.random);
 }
 
+Mesh mp_pushing(const Mesh& input, const MpPushingParams& params, Origins* origins) {
+  return detail::mp_pushing(input, params, origins, nullptr);
+}
+
+SchemeSpec detail::mp_pushing_scheme() {
+  return mp_step_scheme<MpPushingParams>(
+      dlfl::mp_pushing, "mp-pushing",
+      "Meng-Prautzsch corner pushing P: cut every corner off, push the old vertices towards the centre",
+      "how far each old vertex moves towards the centre, as a fraction of the way to its extreme position",
+      "where each edge's new point divides it: |from(e) m| : |m to(e)| = ratio : 1 (1: the midpoint)");
+}
+
 double pushing_extreme_fraction(const glm::dvec3& p, std::span<const glm::dvec3> ring,
                                 const glm::dvec3& center) {
   const std::size_t ring_size = ring.size();
@@ -37,10 +49,6 @@ double pushing_extreme_fraction(const glm::dvec3& p, std::span<const glm::dvec3>
     if (s > 0.0) extreme = std::min(extreme, s);
   }
   return extreme;
-}
-
-Mesh mp_pushing(const Mesh& input, const MpPushingParams& params, Origins* origins) {
-  return detail::mp_pushing(input, params, origins, nullptr);
 }
 
 Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origins* origins,
@@ -95,34 +103,21 @@ Mesh detail::mp_pushing(const Mesh& input, const MpPushingParams& params, Origin
   }
   if (origins) {
     detail::reset_origins(*origins, result);
-    for (std::uint32_t v = 0; v < nv; ++v) origins->vertices[v] = in.vertex(v);
-    for (std::uint32_t e = 0; e < ne; ++e) origins->vertices[nv + e] = in.edge(e);
-    for (std::uint32_t f = 0; f < nf; ++f) origins->faces[f] = in.face(f);
-    for (std::uint32_t k = 0; k < nc; ++k) origins->faces[nf + k] = in.corner(k);
+    in.fill(origins->vertices, {Origin::Kind::vertex, Origin::Kind::edge});
+    in.fill(origins->faces, {Origin::Kind::face, Origin::Kind::corner});
     // The central corner of c runs to the point of edge(next c), cutting off next(c); the triangle of c runs
     // along edge(c), across to the central face (cutting off c), and along edge(prev c).
     std::vector<Origin> edge_of(result.corner_capacity());
     for (std::uint32_t i = 0; i < nc; ++i) {
       const CornerId c(i);
       edge_of[position[i]] = in.corner(m.next(c).index());
-      edge_of[triangle(c) + 0] = in.edge(m.edge(c).index());
-      edge_of[triangle(c) + 1] = in.corner(i);
-      edge_of[triangle(c) + 2] = in.edge(m.edge(m.prev(c)).index());
+      for (std::uint32_t j = 0; j < 3; ++j) {
+        edge_of[triangle(c) + j] = detail::corner_polygon_side(m, in, c, j, 3);
+      }
     }
     detail::set_edge_origins(*origins, result, edge_of);
   }
   return result;
 }
 
-namespace detail {
-
-SchemeSpec mp_pushing_scheme() {
-  return mp_step_scheme<MpPushingParams>(
-      dlfl::mp_pushing, "mp-pushing",
-      "Meng-Prautzsch corner pushing P: cut every corner off, push the old vertices towards the centre",
-      "how far each old vertex moves towards the centre, as a fraction of the way to its extreme position",
-      "where each edge's new point divides it: |from(e) m| : |m to(e)| = ratio : 1 (1: the midpoint)");
-}
-
-}  // namespace detail
 }  // namespace dlfl

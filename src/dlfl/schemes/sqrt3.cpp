@@ -2,7 +2,6 @@
 
 #include <cmath>
 #include <numbers>
-#include <optional>
 #include <vector>
 
 #include <dlfl/dense_mesh.h>
@@ -13,6 +12,32 @@
 #include <dlfl/schemes/detail/valence_weights.h>
 
 namespace dlfl {
+
+namespace {
+
+// The origins of the output (see the header). Out of line so that the step's hot loops are compiled as they
+// are without it (inlined, this block costs the edge pass an instruction per edge even when not asked for).
+[[gnu::noinline]] void sqrt3_origins(const Mesh& input, const Mesh& m, const Mesh& result, Origins& origins) {
+  const detail::InputHandles in(input);
+  detail::reset_origins(origins, result);
+  in.fill(origins.vertices, {Origin::Kind::vertex, Origin::Kind::face});
+  in.fill(origins.faces, {Origin::Kind::corner});
+  // Corner 3c + i of T(c) = (x, G, F): i = 0 runs x -> G, the edge from x to the face point of the face
+  // across edge(c), whose corner at x is next(opposite(c)); 1 is the flipped edge(c); 2 runs F -> x.
+  detail::set_edge_origins(origins, result, [&](std::uint32_t k) {
+    const CornerId c(k / 3);
+    switch (k % 3) {
+      case 0:
+        return in.corner(m.next(m.opposite(c)).index());
+      case 1:
+        return in.edge(m.edge(c).index());
+      default:
+        return in.corner(c.index());
+    }
+  });
+}
+
+}  // namespace
 
 // Connectivity, in closed form from the input's navigation.
 //
@@ -47,12 +72,10 @@ namespace dlfl {
 // Every output corner is set exactly once (corner 0 and 1 of T(s) for the edge leaving s, corner 2 of T(r)
 // for the edge leaving prev(r)), so one pass over the edges builds the whole connectivity.
 Mesh sqrt3(const Mesh& input, Origins* origins) {
-  // On the input, so that errors name its own handles, not compacted ones.
-  detail::require_triangles(input, "sqrt3", "sqrt(3) subdivision", detail::TriangleHoles::refused);
-  std::optional<Mesh> storage;
-  const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
-  const auto [nv, ne, nf, nc] = dense_counts(m);                // nc = 3 nf
-  const std::uint32_t face_base = nv;                           // vertex of the face point of face f
+  const detail::DenseTriangles dense(input, "sqrt3", "sqrt(3) subdivision", detail::TriangleHoles::refused);
+  const Mesh& m = dense.mesh();
+  const auto [nv, ne, nf, nc] = dense_counts(m);  // nc = 3 nf
+  const std::uint32_t face_base = nv;             // vertex of the face point of face f
   MeshAssembler out(std::size_t(nv) + nf, nc, 3);
 
   // Face points.
@@ -94,26 +117,7 @@ Mesh sqrt3(const Mesh& input, Origins* origins) {
     out.set_position(v, (1.0 - alpha) * m.position(VertexId(v)) + (alpha / n) * sum[v]);
   }
   Mesh result = out.finish();
-  if (origins) {
-    const detail::InputHandles in(input);
-    detail::reset_origins(*origins, result);
-    for (std::uint32_t v = 0; v < nv; ++v) origins->vertices[v] = in.vertex(v);
-    for (std::uint32_t f = 0; f < nf; ++f) origins->vertices[face_base + f] = in.face(f);
-    for (std::uint32_t k = 0; k < nc; ++k) origins->faces[k] = in.corner(k);
-    // Corner 3c + i of T(c) = (x, G, F): i = 0 runs x -> G, the edge from x to the face point of the face
-    // across edge(c), whose corner at x is next(opposite(c)); 1 is the flipped edge(c); 2 runs F -> x.
-    detail::set_edge_origins(*origins, result, [&](std::uint32_t k) {
-      const CornerId c(k / 3);
-      switch (k % 3) {
-        case 0:
-          return in.corner(m.next(m.opposite(c)).index());
-        case 1:
-          return in.edge(m.edge(c).index());
-        default:
-          return in.corner(c.index());
-      }
-    });
-  }
+  if (origins) sqrt3_origins(input, m, result, *origins);
   return result;
 }
 

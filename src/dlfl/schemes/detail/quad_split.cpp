@@ -25,27 +25,14 @@ void assemble_quad_split(const Mesh& m, MeshAssembler& out) {
 }
 
 void quad_split_origins(const Mesh& m, const Mesh& out, const InputHandles& in, Origins& origins) {
-  const auto [nv, ne, nf, nc] = dense_counts(m);
   reset_origins(origins, out);
-  for (std::uint32_t v = 0; v < nv; ++v) origins.vertices[v] = in.vertex(v);
-  for (std::uint32_t e = 0; e < ne; ++e) origins.vertices[nv + e] = in.edge(e);
-  for (std::uint32_t f = 0; f < nf; ++f) origins.vertices[nv + ne + f] = in.face(f);
-  for (std::uint32_t k = 0; k < nc; ++k) origins.faces[k] = in.corner(k);
+  in.fill(origins.vertices, {Origin::Kind::vertex, Origin::Kind::edge, Origin::Kind::face});
+  in.fill(origins.faces, {Origin::Kind::corner});
   // Quad k's corners, in order: at the vertex point (edge along edge(k)), at the edge point of edge(k) (edge
   // into the face point), at the face point (edge out to the edge point of edge(prev k), corner prev(k)'s
   // inner edge), at the edge point of edge(prev k) (edge along edge(prev k)).
   set_edge_origins(origins, out, [&](std::uint32_t corner) {
-    const CornerId c(corner / 4);
-    switch (corner % 4) {
-      case 0:
-        return in.edge(m.edge(c).index());
-      case 1:
-        return in.corner(c.index());
-      case 2:
-        return in.corner(m.prev(c).index());
-      default:
-        return in.edge(m.edge(m.prev(c)).index());
-    }
+    return corner_polygon_side(m, in, CornerId(corner / 4), corner % 4, 4);
   });
 }
 

@@ -2,6 +2,7 @@
 
 #include <string>
 
+#include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 
 namespace dlfl::detail {
@@ -27,6 +28,13 @@ void require_triangles(const Mesh& mesh, std::string_view scheme, std::string_vi
     throw TopologyError(prefix + to_string(f) + " has " + std::to_string(n) + " corners; " +
                         std::string(title) + " needs triangles");
   }
+}
+
+DenseTriangles::DenseTriangles(const Mesh& input, std::string_view scheme, std::string_view title,
+                               TriangleHoles holes) {
+  // On the input, so that errors name its own handles, not compacted ones.
+  require_triangles(input, scheme, title, holes);
+  mesh_ = &dense_mesh(input, storage_);
 }
 
 }  // namespace dlfl::detail

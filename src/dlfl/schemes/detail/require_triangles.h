@@ -1,6 +1,7 @@
 #pragma once
 // Internal to the schemes: the input check of the triangle schemes (Loop, sqrt(3)).
 
+#include <optional>
 #include <string_view>
 
 #include <dlfl/mesh.h>
@@ -16,5 +17,21 @@ enum class TriangleHoles { allowed, refused };
 /// `mesh` (check the input, not a compacted copy). `title` names the scheme in prose ("Loop subdivision").
 void require_triangles(const Mesh& mesh, std::string_view scheme, std::string_view title,
                        TriangleHoles holes);
+
+/// The start of a triangle scheme: `require_triangles` on the input, then the input by dense handles
+/// 0 .. count-1 (`dense_mesh`). Not copied: `mesh()` may be its own compacted copy of the input.
+class DenseTriangles {
+ public:
+  DenseTriangles(const Mesh& input, std::string_view scheme, std::string_view title, TriangleHoles holes);
+  DenseTriangles(const DenseTriangles&) = delete;
+  DenseTriangles& operator=(const DenseTriangles&) = delete;
+
+  /// The input, handles 0 .. count-1.
+  const Mesh& mesh() const { return *mesh_; }
+
+ private:
+  std::optional<Mesh> storage_;
+  const Mesh* mesh_ = nullptr;
+};
 
 }  // namespace dlfl::detail

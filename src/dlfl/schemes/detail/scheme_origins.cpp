@@ -22,7 +22,27 @@ InputHandles::InputHandles(const Mesh& input)
     : vertices_(live_indices(input.vertices(), input.num_vertices(), input.vertex_capacity())),
       edges_(live_indices(input.edges(), input.num_edges(), input.edge_capacity())),
       faces_(live_indices(input.faces(), input.num_faces(), input.face_capacity())),
-      corners_(live_indices(input.corners(), input.num_corners(), input.corner_capacity())) {}
+      corners_(live_indices(input.corners(), input.num_corners(), input.corner_capacity())),
+      counts_{static_cast<std::uint32_t>(input.num_vertices()), static_cast<std::uint32_t>(input.num_edges()),
+              static_cast<std::uint32_t>(input.num_faces()),
+              static_cast<std::uint32_t>(input.num_corners())} {}
+
+void InputHandles::fill(std::span<Origin> slots, std::initializer_list<Origin::Kind> kinds) const {
+  const std::vector<std::uint32_t>* const tables[] = {&vertices_, &edges_, &faces_, &corners_};
+  Origin* slot = slots.data();
+  for (Origin::Kind kind : kinds) {
+    // A kind at a time, and the identity apart, so that each inner loop is a plain store.
+    const std::size_t k = std::size_t(kind) - std::size_t(Origin::Kind::vertex);
+    const std::vector<std::uint32_t>& handles = *tables[k];
+    const std::uint32_t count = counts_[k];
+    if (handles.empty()) {
+      for (std::uint32_t i = 0; i < count; ++i) slot[i] = {kind, i};
+    } else {
+      for (std::uint32_t i = 0; i < count; ++i) slot[i] = {kind, handles[i]};
+    }
+    slot += count;
+  }
+}
 
 void reset_origins(Origins& origins, const Mesh& output) {
   origins.vertices.assign(output.vertex_capacity(), Origin{});

@@ -4,8 +4,10 @@
 // Composite schemes (dual-honeycomb-dual, MLCA after a split, MHP) chain the maps of their steps with
 // `compose`, which needs the origins of a step's corners as well when the next step's origins name corners.
 
+#include <array>
 #include <concepts>
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <vector>
 
@@ -24,15 +26,31 @@ class InputHandles {
   Origin face(std::uint32_t dense) const { return {Origin::Kind::face, map(faces_, dense)}; }
   Origin corner(std::uint32_t dense) const { return {Origin::Kind::corner, map(corners_, dense)}; }
 
+  /// Sets `slots`, from slot 0, to the origins of every input element of each of `kinds` (not none) in turn,
+  /// in dense order: with {vertex, edge}, slot v <- vertex v and slot V + e <- edge e. Later slots are kept.
+  void fill(std::span<Origin> slots, std::initializer_list<Origin::Kind> kinds) const;
+
  private:
   static std::uint32_t map(const std::vector<std::uint32_t>& handles, std::uint32_t k) {
     return handles.empty() ? k : handles[k];
   }
   std::vector<std::uint32_t> vertices_, edges_, faces_, corners_;
+  std::array<std::uint32_t, 4> counts_;  // live vertices, edges, faces, corners of the input
 };
 
 /// Sizes `origins` to the capacities of `output`, every slot Kind::none.
 void reset_origins(Origins& origins, const Mesh& output);
+
+/// The origin of side `side` (of `sides`; side j leaves corner j) of the polygon that input corner c of dense
+/// `m` becomes when its two edges are halved (Loop's corner triangles, P's triangles, the quad split's
+/// quads): side 0 halves edge(c) and the last side edge(prev c), so they stem from those edges; side 1 is the
+/// inner edge of c and side 2 of a quad the inner edge of prev(c), so they stem from those corners.
+inline Origin corner_polygon_side(const Mesh& m, const InputHandles& in, CornerId c, std::uint32_t side,
+                                  std::uint32_t sides) {
+  if (side == 0) return in.edge(m.edge(c).index());
+  if (side + 1 == sides) return in.edge(m.edge(m.prev(c)).index());
+  return in.corner(side == 1 ? c.index() : m.prev(c).index());
+}
 
 /// Sets the origin of every live edge of `output` to `of_corner(k)`, k the index of the edge's side-0 corner
 /// (the origin of the edge leaving output corner k).

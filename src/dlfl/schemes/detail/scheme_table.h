@@ -1,7 +1,7 @@
 #pragma once
 // Internal to the scheme registry: the declaration of every scheme, each defined in the scheme's own .cpp
 // next to its implementation. scheme_registry.cpp lists them; adding a scheme is one new file plus one line
-// there and one here.
+// there and a name here.
 
 #include <string>
 #include <utility>
@@ -20,17 +20,11 @@ inline SchemeSpec parameterless_scheme(Mesh (*step)(const Mesh&, Origins*), std:
   return spec;
 }
 
-SchemeSpec catmull_clark_scheme();         // catmull_clark.cpp
-SchemeSpec doo_sabin_scheme();             // doo_sabin.cpp
-SchemeSpec dual_scheme();                  // dual.cpp
-SchemeSpec dual_honeycomb_dual_scheme();   // dual_honeycomb_dual.cpp
-SchemeSpec honeycomb_scheme();             // honeycomb.cpp
-SchemeSpec loop_scheme();                  // loop.cpp
-SchemeSpec mhp_scheme();                   // meng_prautzsch_mixed.cpp
-SchemeSpec mlca_scheme();                  // mlca_polygons.cpp
-SchemeSpec mp_honeycomb_scheme();          // meng_prautzsch_honeycomb.cpp
-SchemeSpec mp_pushing_scheme();            // meng_prautzsch_pushing.cpp
-SchemeSpec sqrt3_scheme();                 // sqrt3.cpp
-SchemeSpec zhang_wang_honeycomb_scheme();  // zhang_wang_honeycomb.cpp
+// Named after their files (loop_scheme in loop.cpp), but for mhp_scheme (meng_prautzsch_mixed.cpp),
+// mlca_scheme (mlca_polygons.cpp) and mp_honeycomb_scheme, mp_pushing_scheme (meng_prautzsch_honeycomb.cpp,
+// meng_prautzsch_pushing.cpp).
+SchemeSpec catmull_clark_scheme(), doo_sabin_scheme(), dual_scheme(), dual_honeycomb_dual_scheme(),
+    honeycomb_scheme(), loop_scheme(), mhp_scheme(), mlca_scheme(), mp_honeycomb_scheme(),
+    mp_pushing_scheme(), sqrt3_scheme(), zhang_wang_honeycomb_scheme();
 
 }  // namespace dlfl::detail
