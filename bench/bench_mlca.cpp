@@ -10,13 +10,14 @@
 #include <numbers>
 #include <string>
 
-#include "bench_meshes.h"
-#include "bench_util.h"
+#include <dlfl/build_mesh.h>
 #include <dlfl/cells/cell_average.h>
 #include <dlfl/cells/mlca_subdivide.h>
 #include <dlfl/cells/multilinear_subdivide.h>
-#include <dlfl/build_mesh.h>
 #include <dlfl/schemes/catmull_clark.h>
+#include "bench_meshes.h"
+#include "bench_util.h"
+#include "test_meshes.h"
 
 using namespace dlfl;
 
@@ -38,17 +39,6 @@ CellComplex hex_grid(int n) {
                     id(i + 1, j, k + 1), id(i, j + 1, k + 1), id(i + 1, j + 1, k + 1)});
       }
     }
-  }
-  return c;
-}
-
-// The same quads as a cell complex: the cycle a b c d is the tensor-product quad (a, b, d, c).
-CellComplex quads_of(const PolygonSoup& soup) {
-  CellComplex c;
-  c.positions = soup.positions;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const auto q = soup.face(f);
-    c.add_cell({q[0], q[1], q[3], q[2]});
   }
   return c;
 }
@@ -93,7 +83,7 @@ int main(int argc, char** argv) {
   const double steal = bench::steal_seconds();
   measure_complex("mlca hexahedra (50^3 grid)", hex_grid(50), runs);
   const PolygonSoup soup = bench::torus_soup(500, 500);
-  measure_complex("mlca quads (500^2 torus)", quads_of(soup), runs);
+  measure_complex("mlca quads (500^2 torus)", test::quads_of(soup), runs);
   const Mesh mesh = build_mesh(soup);
   std::size_t faces = 0;
   report("catmull-clark, same torus (DLFL)", mesh.num_faces(), faces = catmull_clark(mesh).num_faces(),

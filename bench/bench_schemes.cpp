@@ -13,8 +13,6 @@
 #include <string>
 #include <vector>
 
-#include "bench_meshes.h"
-#include "bench_util.h"
 #include <dlfl/build_mesh.h>
 #include <dlfl/schemes/catmull_clark.h>
 #include <dlfl/schemes/doo_sabin.h>
@@ -25,6 +23,9 @@
 #include <dlfl/schemes/mlca_polygons.h>
 #include <dlfl/schemes/sqrt3.h>
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
+#include "bench_meshes.h"
+#include "bench_util.h"
+#include "test_meshes.h"
 
 using namespace dlfl;
 
@@ -118,16 +119,7 @@ void compare_root3(const char* name, const Mesh& input, int steps) {
 }
 
 int compare_main() {
-  const double p = std::numbers::phi;
-  PolygonSoup ico;
-  ico.positions = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
-                   {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
-  const std::uint32_t faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                      {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                      {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                      {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (const auto& f : faces) ico.add_face({f[0], f[1], f[2]});
-  compare_root3("icosahedron", build_mesh(ico), 4);
+  compare_root3("icosahedron", build_mesh(test::icosahedron_soup()), 4);
   compare_root3("torus 16 x 16 (triangles)", build_mesh(bench::torus_soup(16, 16, true)), 3);
   return 0;
 }

@@ -18,11 +18,10 @@ namespace {
 // The unit cube as one VTK hexahedron (VTK's vertex order: bottom square, then top square,
 // counter-clockwise).
 std::filesystem::path unit_cube_vtk() {
-  const auto path = scratch("cube.vtk");
-  std::ofstream(path) << "# vtk DataFile Version 3.0\nunit cube\nASCII\nDATASET UNSTRUCTURED_GRID\n"
-                         "POINTS 8 double\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
-                         "CELLS 1 9\n8 0 1 2 3 4 5 6 7\nCELL_TYPES 1\n12\n";
-  return path;
+  return scratch_file("cube.vtk",
+                      "# vtk DataFile Version 3.0\nunit cube\nASCII\nDATASET UNSTRUCTURED_GRID\n"
+                      "POINTS 8 double\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n0 0 1\n1 0 1\n1 1 1\n0 1 1\n"
+                      "CELLS 1 9\n8 0 1 2 3 4 5 6 7\nCELL_TYPES 1\n12\n");
 }
 
 nlohmann::json info(const std::filesystem::path& path) {

@@ -92,6 +92,13 @@ inline void write_text(const std::filesystem::path& path, const std::string& con
   REQUIRE(out.good());
 }
 
+/// `name` in the process's scratch folder, holding `content`: an input file for a test.
+inline std::filesystem::path scratch_file(const std::string& name, const std::string& content) {
+  const auto path = scratch(name);
+  write_text(path, content);
+  return path;
+}
+
 /// The whole content of `path` (empty if it cannot be read).
 inline std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);

@@ -94,39 +94,52 @@ bool same_bits(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& 
   return a.size() == b.size() && std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::dvec3)) == 0;
 }
 
-const char* extension(MeshFormat format) {
-  switch (format) {
-    case MeshFormat::obj:
-      return "obj";
-    case MeshFormat::off:
-      return "off";
-    case MeshFormat::ply:
-      return "ply";
-    case MeshFormat::json:
-      return "json";
-  }
-  return "";
+// The polygon formats with their extension, reader and writer (PLY written binary), listed here rather than
+// taken from the library's own dispatch (mesh_io.cpp), which these tests check. JSON holds a mesh, not
+// polygons.
+struct PolygonFormat {
+  MeshFormat format;
+  const char* extension;
+  ParsedPolygons (*parse)(std::istream&, const std::string&);
+  void (*write)(std::ostream&, const PolygonSoup&);
+};
+const PolygonFormat polygon_formats[] = {
+    {MeshFormat::obj, "obj", parse_obj, write_obj},
+    {MeshFormat::off, "off", parse_off, write_off},
+    {MeshFormat::ply, "ply", parse_ply,
+     [](std::ostream& out, const PolygonSoup& soup) { write_ply(out, soup, true); }},
+};
+
+const PolygonFormat& polygon_format(MeshFormat format) {
+  const auto it = std::find_if(std::begin(polygon_formats), std::end(polygon_formats),
+                               [&](const PolygonFormat& f) { return f.format == format; });
+  REQUIRE(it != std::end(polygon_formats));
+  return *it;
 }
 
 ParsedPolygons parse(MeshFormat format, const std::string& text, const std::string& name) {
   std::istringstream in(text);
-  switch (format) {
-    case MeshFormat::obj:
-      return parse_obj(in, name);
-    case MeshFormat::off:
-      return parse_off(in, name);
-    case MeshFormat::ply:
-      return parse_ply(in, name);
-    case MeshFormat::json:
-      break;  // not a polygon format
-  }
-  return {};
+  return polygon_format(format).parse(in, name);
+}
+
+// What a parse must give: the polygons, and the line each vertex and each face came from.
+struct Expected {
+  std::vector<glm::dvec3> positions;
+  std::vector<std::uint32_t> offsets, indices;
+  std::vector<std::size_t> vertex_lines, face_lines;
+};
+void check_parsed(const ParsedPolygons& parsed, const Expected& expected) {
+  CHECK(parsed.soup.positions == expected.positions);
+  CHECK(parsed.soup.offsets == expected.offsets);
+  CHECK(parsed.soup.indices == expected.indices);
+  CHECK(parsed.vertex_lines == expected.vertex_lines);
+  CHECK(parsed.face_lines == expected.face_lines);
 }
 
 // Parses and builds `text`, and checks that this fails with an IoError at `line` whose message has
 // `fragment`.
 void check_error(MeshFormat format, const std::string& text, std::size_t line, const std::string& fragment) {
-  const std::string name = std::string("bad.") + extension(format);
+  const std::string name = std::string("bad.") + polygon_format(format).extension;
   CAPTURE(text);
   std::optional<IoError> error;
   try {
@@ -142,6 +155,18 @@ void check_error(MeshFormat format, const std::string& text, std::size_t line, c
   const std::string location = line == 0 ? name + ": " : name + ":" + std::to_string(line) + ": ";
   CHECK(message.rfind(location, 0) == 0);
   CHECK(message.find(fragment) != std::string::npos);
+}
+
+// One bad input for check_error: the text after a head, the line of the error and a fragment of its message.
+struct BadInput {
+  std::string text;
+  std::size_t line;
+  const char* fragment;
+};
+
+// check_error for every case, each with `head` put before its text.
+void check_errors(MeshFormat format, const std::string& head, const std::vector<BadInput>& cases) {
+  for (const BadInput& c : cases) check_error(format, head + c.text, c.line, c.fragment);
 }
 
 // Little-endian bytes for hand-made binary PLY files, independent of the host's byte order.
@@ -329,14 +354,12 @@ TEST_CASE("io: obj index forms and relative indices and comments and ignored sta
       "v 2 1 0\n"                          // 20
       "f 2 5 6 3\n"                        // 21
       "f -5 -2 -1\n";                      // 22: relative to 6 vertices
-  const ParsedPolygons parsed = parse(MeshFormat::obj, text, "square.obj");
-  const std::vector<glm::dvec3> positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0},
-                                             {0, 1, 0}, {2, 0, 0}, {2, 1, 0}};
-  CHECK(parsed.soup.positions == positions);
-  CHECK(parsed.soup.offsets == std::vector<std::uint32_t>{0, 3, 6, 9, 13, 16});
-  CHECK(parsed.soup.indices == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3, 0, 2, 3, 1, 4, 5, 2, 1, 4, 5});
-  CHECK(parsed.vertex_lines == std::vector<std::size_t>{4, 5, 6, 7, 19, 20});
-  CHECK(parsed.face_lines == std::vector<std::size_t>{14, 15, 17, 21, 22});
+  check_parsed(parse(MeshFormat::obj, text, "square.obj"),
+               {.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}},
+                .offsets = {0, 3, 6, 9, 13, 16},
+                .indices = {0, 1, 2, 0, 2, 3, 0, 2, 3, 1, 4, 5, 2, 1, 4, 5},
+                .vertex_lines = {4, 5, 6, 7, 19, 20},
+                .face_lines = {14, 15, 17, 21, 22}});
 }
 
 TEST_CASE("io: obj faces may name vertices defined further down") {
@@ -358,12 +381,9 @@ TEST_CASE("io: off variants and comments and colours") {
         "0 1 0\n"                   // 8
         "3 0 1 2 255 0 0\n"         // 9: a colour after the indices
         "3 0 2 3 0.5 0.5 0.5 1\n";  // 10
-    const ParsedPolygons parsed = parse(MeshFormat::off, text, "s.off");
-    CHECK(parsed.soup.positions == std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
-    CHECK(parsed.soup.offsets == std::vector<std::uint32_t>{0, 3, 6});
-    CHECK(parsed.soup.indices == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3});
-    CHECK(parsed.vertex_lines == std::vector<std::size_t>{5, 6, 7, 8});
-    CHECK(parsed.face_lines == std::vector<std::size_t>{9, 10});
+    check_parsed(
+        parse(MeshFormat::off, text, "s.off"),
+        {{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 3, 6}, {0, 1, 2, 0, 2, 3}, {5, 6, 7, 8}, {9, 10}});
   }
   SUBCASE("COFF with vertex colours, counts on the header line") {
     const std::string text = "COFF 3 1\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 2 0 1\n";
@@ -408,12 +428,12 @@ TEST_CASE("io: ply ascii skips other properties and elements") {
       "7 3 0 1 2 6 0 0 1 0 1 1\n"               // 25
       "7 3 0 2 3 0\n"                           // 26
       "0 1\n";                                  // 27
-  const ParsedPolygons parsed = parse(MeshFormat::ply, text, "s.ply");
-  CHECK(parsed.soup.positions == std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.1, 1, 0}});
-  CHECK(parsed.soup.offsets == std::vector<std::uint32_t>{0, 3, 6});
-  CHECK(parsed.soup.indices == std::vector<std::uint32_t>{0, 1, 2, 0, 2, 3});
-  CHECK(parsed.vertex_lines == std::vector<std::size_t>{20, 21, 22, 23});
-  CHECK(parsed.face_lines == std::vector<std::size_t>{25, 26});
+  check_parsed(parse(MeshFormat::ply, text, "s.ply"),
+               {.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0.1, 1, 0}},
+                .offsets = {0, 3, 6},
+                .indices = {0, 1, 2, 0, 2, 3},
+                .vertex_lines = {20, 21, 22, 23},
+                .face_lines = {25, 26}});
 }
 
 namespace {
@@ -484,41 +504,15 @@ TEST_CASE("io: parsers read large unseekable streams") {
       grid.add_face({v, v + 1, v + 82, v + 81});
     }
   }
-  for (MeshFormat format : {MeshFormat::obj, MeshFormat::off, MeshFormat::ply}) {
-    const std::string ext = extension(format);
-    CAPTURE(ext);
+  for (const PolygonFormat& format : polygon_formats) {
+    CAPTURE(format.extension);
     std::ostringstream out;
-    switch (format) {
-      case MeshFormat::obj:
-        write_obj(out, grid);
-        break;
-      case MeshFormat::off:
-        write_off(out, grid);
-        break;
-      case MeshFormat::ply:
-        write_ply(out, grid, true);
-        break;
-      case MeshFormat::json:
-        break;  // not a polygon format
-    }
+    format.write(out, grid);
     REQUIRE(out.str().size() > 3 * 65536);
     PipeBuffer pipe(out.str());
     std::istream in(&pipe);
     REQUIRE(in.rdbuf()->pubseekoff(0, std::ios::cur, std::ios::in) == std::streampos(-1));
-    ParsedPolygons parsed;
-    switch (format) {
-      case MeshFormat::obj:
-        parsed = parse_obj(in, "pipe");
-        break;
-      case MeshFormat::off:
-        parsed = parse_off(in, "pipe");
-        break;
-      case MeshFormat::ply:
-        parsed = parse_ply(in, "pipe");
-        break;
-      case MeshFormat::json:
-        break;  // not a polygon format
-    }
+    const ParsedPolygons parsed = format.parse(in, "pipe");
     CHECK(same_bits(parsed.soup.positions, grid.positions));
     CHECK(parsed.soup.offsets == grid.offsets);
     CHECK(parsed.soup.indices == grid.indices);
@@ -576,68 +570,90 @@ TEST_CASE("io: read_mesh reports the file and line of a topology error") {
 
 TEST_CASE("io: obj errors carry the line") {
   const auto obj = MeshFormat::obj;
-  check_error(obj, tetra_obj + "f 1 2 5\n", 5, "vertex index 5 is out of range");
-  check_error(obj, tetra_obj + "f 1 2 3\n\nf 0 1 2\n", 7, "vertex index 0");
-  check_error(obj, "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 -2 -1\nv 0 0 1\n", 4, "out of range");
-  check_error(obj, tetra_obj + "f 1 x 3\n", 5, "bad vertex index 'x'");
-  check_error(obj, "v 0 0 0\nv 1 oops 0\n", 2, "bad y coordinate 'oops'");
-  check_error(obj, "v 0 0 0\nv 1 0\n", 2, "missing z coordinate");
-  check_error(obj, "v 0 0 0\n# c\nv 1 nan 0\n", 3, "not finite");
-  check_error(obj, "v 0 0 0\nv inf 0 0\n", 2, "not finite");
-  check_error(obj, "v 0 0 0\nv 0 0 -1e999\n", 2, "out of range");
-  check_error(obj, tetra_obj + "f 1 2\n", 5, "face has 2 vertices");
-  // Checked by the mesh builder, reported at the line of the face or vertex.
-  check_error(obj, tetra_obj + "f 1 2 3\nf 1 3 3\n", 6, "twice in a row");
-  check_error(obj, tetra_obj + "f 1 2 3\nf 1 2 4\n", 6, "same direction");
-  check_error(obj, tetra_obj + "v 1 1 1\nf 1 2 3\nf 2 1 4\n# third\nf 1 2 5\n", 9, "same direction");
-  check_error(obj, "# bow tie\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n", 2,
-              "non-manifold");
+  // Bad faces after a good tetrahedron; the last three are checked by the mesh builder, which reports them at
+  // the line of the face.
+  check_errors(obj, tetra_obj,
+               {
+                   {"f 1 2 5\n", 5, "vertex index 5 is out of range"},
+                   {"f 1 2 3\n\nf 0 1 2\n", 7, "vertex index 0"},
+                   {"f 1 x 3\n", 5, "bad vertex index 'x'"},
+                   {"f 1 2\n", 5, "face has 2 vertices"},
+                   {"f 1 2 3\nf 1 3 3\n", 6, "twice in a row"},
+                   {"f 1 2 3\nf 1 2 4\n", 6, "same direction"},
+                   {"v 1 1 1\nf 1 2 3\nf 2 1 4\n# third\nf 1 2 5\n", 9, "same direction"},
+               });
   // Two closed tetrahedra touching at the tip (vertex 4, on line 5): no boundary, yet not a manifold.
   const std::string two_cones =
       "v 0 0 0\nv 1 0 0\nv 0 1 0\n# tip\nv 0 0 1\nv 1 1 2\nv 0 1 2\nv 1 0 2\n"
       "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
       "f 5 6 7\nf 5 4 6\nf 5 7 4\nf 6 4 7\n";
-  check_error(obj, two_cones, 5, "non-manifold");
+  // Whole files; the last two are checked by the mesh builder, which reports them at the line of the vertex.
+  check_errors(obj, "",
+               {
+                   {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 -2 -1\nv 0 0 1\n", 4, "out of range"},
+                   {"v 0 0 0\nv 1 oops 0\n", 2, "bad y coordinate 'oops'"},
+                   {"v 0 0 0\nv 1 0\n", 2, "missing z coordinate"},
+                   {"v 0 0 0\n# c\nv 1 nan 0\n", 3, "not finite"},
+                   {"v 0 0 0\nv inf 0 0\n", 2, "not finite"},
+                   {"v 0 0 0\nv 0 0 -1e999\n", 2, "out of range"},
+                   {"# bow tie\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n", 2,
+                    "non-manifold"},
+                   {two_cones, 5, "non-manifold"},
+               });
 }
 
 TEST_CASE("io: off errors carry the line") {
   const auto off = MeshFormat::off;
-  const std::string head = "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n";
-  check_error(off, head + "3 0 1 4\n", 7, "vertex index 4 is out of range");
-  check_error(off, head + "3 0 -1 2\n", 7, "vertex index -1 is out of range");
-  check_error(off, head + "2 0 1\n", 7, "face has 2 vertices");
-  check_error(off, head + "3 0 1 1\n", 7, "twice in a row");
-  check_error(off, "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n", 5, "3 of 4 vertices");
-  check_error(off, "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n\n", 8, "1 of 2 faces");
-  check_error(off, "OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", 4, "not finite");
-  check_error(off, "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 -inf\n3 0 1 2\n", 5, "not finite");
-  check_error(off, "OFF\n3 x 0\n", 2, "bad face count 'x'");
-  check_error(off, "# no header\n3 1 0\n0 0 0\n", 2, "missing OFF header");
-  check_error(off, "OFX\n3 1 0\n", 1, "missing OFF header");
-  check_error(off, "4OFF\n3 1 0\n", 1, "unsupported");
-  check_error(off, "", 1, "missing OFF header");
+  // Bad faces after four good vertices.
+  check_errors(off, "OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n",
+               {
+                   {"3 0 1 4\n", 7, "vertex index 4 is out of range"},
+                   {"3 0 -1 2\n", 7, "vertex index -1 is out of range"},
+                   {"2 0 1\n", 7, "face has 2 vertices"},
+                   {"3 0 1 1\n", 7, "twice in a row"},
+               });
+  check_errors(off, "",
+               {
+                   {"OFF\n4 1 0\n0 0 0\n1 0 0\n0 1 0\n", 5, "3 of 4 vertices"},
+                   {"OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n\n", 8, "1 of 2 faces"},
+                   {"OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", 4, "not finite"},
+                   {"OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 -inf\n3 0 1 2\n", 5, "not finite"},
+                   {"OFF\n3 x 0\n", 2, "bad face count 'x'"},
+                   {"# no header\n3 1 0\n0 0 0\n", 2, "missing OFF header"},
+                   {"OFX\n3 1 0\n", 1, "missing OFF header"},
+                   {"4OFF\n3 1 0\n", 1, "unsupported"},
+                   {"", 1, "missing OFF header"},
+               });
 }
 
 TEST_CASE("io: ply ascii errors carry the line") {
   const auto ply = MeshFormat::ply;
-  const std::string head =
+  // Bad bodies after a good header of 9 lines.
+  check_errors(
+      ply,
       "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
-      "element face 1\nproperty list uchar int vertex_indices\nend_header\n";  // 9 lines
-  check_error(ply, head + "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", 13, "vertex index 3 is out of range");
-  check_error(ply, head + "0 0 0\n1 0 0\n0 1 0\n2 0 1\n", 13, "face has 2 vertices");
-  check_error(ply, head + "0 0 0\n1 0 0\n0 1 0\n3 0 2 2\n", 13, "twice in a row");
-  check_error(ply, head + "0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n", 11, "not finite");
-  check_error(ply, head + "0 0 0\n1 0 0\n0 1 0\n3 0 1\n", 13, "ends in face 0");
-  check_error(ply, head + "0 0 0\n1 0 0\n", 11, "ends in vertex 2");
-  check_error(ply, head + "0 0 0\n1 0 z\n", 11, "bad z coordinate 'z'");
-  check_error(ply, "plyx\n", 1, "not a PLY file");
-  check_error(ply, "ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n", 4, "end_header");
-  check_error(ply, "ply\nformat ascii 2.0\n", 2, "version");
-  check_error(ply, "ply\nformat binary_big_endian 1.0\nelement vertex 0\nend_header\n", 2, "unsupported");
-  check_error(ply, "ply\nformat ascii 1.0\nelement vertex 1\nproperty int8x x\nend_header\n", 4, "int8x");
-  check_error(ply,
-              "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n", 3,
-              "x, y and z");
+      "element face 1\nproperty list uchar int vertex_indices\nend_header\n",
+      {
+          {"0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n", 13, "vertex index 3 is out of range"},
+          {"0 0 0\n1 0 0\n0 1 0\n2 0 1\n", 13, "face has 2 vertices"},
+          {"0 0 0\n1 0 0\n0 1 0\n3 0 2 2\n", 13, "twice in a row"},
+          {"0 0 0\nnan 0 0\n0 1 0\n3 0 1 2\n", 11, "not finite"},
+          {"0 0 0\n1 0 0\n0 1 0\n3 0 1\n", 13, "ends in face 0"},
+          {"0 0 0\n1 0 0\n", 11, "ends in vertex 2"},
+          {"0 0 0\n1 0 z\n", 11, "bad z coordinate 'z'"},
+      });
+  // Bad headers.
+  check_errors(
+      ply, "",
+      {
+          {"plyx\n", 1, "not a PLY file"},
+          {"ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n", 4, "end_header"},
+          {"ply\nformat ascii 2.0\n", 2, "version"},
+          {"ply\nformat binary_big_endian 1.0\nelement vertex 0\nend_header\n", 2, "unsupported"},
+          {"ply\nformat ascii 1.0\nelement vertex 1\nproperty int8x x\nend_header\n", 4, "int8x"},
+          {"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n", 3,
+           "x, y and z"},
+      });
 }
 
 TEST_CASE("io: ply binary errors name the element") {

@@ -36,6 +36,13 @@ using test::require_valid;
 
 namespace {
 
+// The vertex, edge and face counts of a result.
+void check_counts(const Mesh& m, std::size_t vertices, std::size_t edges, std::size_t faces) {
+  CHECK(m.num_vertices() == vertices);
+  CHECK(m.num_edges() == edges);
+  CHECK(m.num_faces() == faces);
+}
+
 constexpr double pi = std::numbers::pi;
 constexpr double phi = std::numbers::phi;
 
@@ -165,9 +172,7 @@ void check_honeycomb_step(const Mesh& in, const MpHoneycombParams& params, bool 
   const Mesh out = mp_honeycomb(in, params);
   require_valid(out);
   const std::size_t V = in.num_vertices(), E = in.num_edges(), F = in.num_faces();
-  CHECK(out.num_vertices() == V + 2 * E);
-  CHECK(out.num_edges() == 4 * E);
-  CHECK(out.num_faces() == F + E);
+  check_counts(out, V + 2 * E, 4 * E, F + E);
   for (VertexId v : in.vertices()) {
     CHECK(out.valence(v) == in.valence(v));
     CHECK(out.position(v) == in.position(v));  // bit for bit: old vertices stay
@@ -200,9 +205,7 @@ void check_pushing_step(const Mesh& in, const MpPushingParams& params) {
   const Mesh out = mp_pushing(in, params);
   require_valid(out);
   const std::size_t V = in.num_vertices(), E = in.num_edges(), F = in.num_faces();
-  CHECK(out.num_vertices() == V + E);
-  CHECK(out.num_edges() == 4 * E);
-  CHECK(out.num_faces() == F + 2 * E);
+  check_counts(out, V + E, 4 * E, F + 2 * E);
   const glm::dvec3 centre = params.center.value_or(vertex_centroid(in));
   for (VertexId v : in.vertices()) {
     CHECK(out.valence(v) == in.valence(v));
@@ -231,6 +234,38 @@ MpPushingParams p_params(double tau, double ratio = 1.0) {
   p.tau = tau;
   p.ratio = ratio;
   return p;
+}
+
+// Parameters drawn at random from `seed` (per-edge ratios, per-vertex taus).
+template <class Params>
+Params random_params(std::uint64_t seed) {
+  Params p;
+  p.random.enabled = true;
+  p.random.seed = seed;
+  return p;
+}
+
+// Three steps of `scheme` from each start with each parameter set: `measure` never grows; returns the
+// largest ratio of the last measure to the first, for a check that it also shrinks.
+template <class Params, class Scheme, class Measure>
+double check_never_grows(std::initializer_list<Mesh> starts, std::initializer_list<Params> params,
+                         Scheme scheme, Measure measure) {
+  double worst = 0;
+  for (const Mesh& start : starts) {
+    for (const Params& p : params) {
+      Mesh m = start;
+      const double first = measure(m);
+      double previous = first;
+      for (int step = 0; step < 3; ++step) {
+        m = scheme(m, p);
+        const double now = measure(m);
+        CHECK(now <= previous + 1e-12);
+        previous = now;
+      }
+      worst = std::max(worst, previous / first);
+    }
+  }
+  return worst;
 }
 
 }  // namespace
@@ -466,24 +501,11 @@ TEST_CASE("mp-honeycomb: random per-edge ratios and per-face offsets, reproducib
 TEST_CASE("mp-honeycomb: the maximum vertex angle never grows and shrinks over several steps") {
   // Remark 2.5 (faces of the Gaussian image only get subdivided) and theorem 3.1 (geometric decrease). The
   // tetrahedron's vertex angles (125.26 degrees) are attained inside Gaussian arcs, which the measure sees.
-  MpHoneycombParams random;
-  random.random.enabled = true;
-  random.random.seed = 9;
-  const Mesh starts[] = {test::cube(), test::tetrahedron(), icosahedron(), cuboid(), random_polyhedron(21)};
-  for (const Mesh& start : starts) {
-    for (const MpHoneycombParams& p : {h_params(0.5), h_params(0.2, 2.0), h_params(0.8, 0.5), random}) {
-      Mesh m = start;
-      const double first = max_vertex_angle(m);
-      double previous = first;
-      for (int step = 0; step < 3; ++step) {
-        m = mp_honeycomb(m, p);
-        const double now = max_vertex_angle(m);
-        CHECK(now <= previous + 1e-12);
-        previous = now;
-      }
-      CHECK(previous < 0.9 * first);
-    }
-  }
+  const double shrink = check_never_grows(
+      {test::cube(), test::tetrahedron(), icosahedron(), cuboid(), random_polyhedron(21)},
+      {h_params(0.5), h_params(0.2, 2.0), h_params(0.8, 0.5), random_params<MpHoneycombParams>(9)},
+      [](const Mesh& m, const MpHoneycombParams& p) { return mp_honeycomb(m, p); }, max_vertex_angle);
+  CHECK(shrink < 0.9);
 }
 
 // ---- P ----------------------------------------------------------------------------------------------------
@@ -494,9 +516,7 @@ TEST_CASE("mp-pushing: the cube by hand") {
   for (double tau : {0.5, 0.2, 0.9}) {
     CAPTURE(tau);
     const Mesh out = mp_pushing(test::cube(), p_params(tau));
-    CHECK(out.num_vertices() == 20);
-    CHECK(out.num_edges() == 48);
-    CHECK(out.num_faces() == 30);
+    check_counts(out, 20, 48, 30);
     const Mesh cube = test::cube();
     for (VertexId v : cube.vertices()) {
       const glm::dvec3 expected = (1 - tau / 3) * cube.position(v);
@@ -581,22 +601,10 @@ TEST_CASE("mp-pushing: the extreme position is where the 1-ring turns flat") {
 TEST_CASE("mp-pushing: the maximum face angle never grows (theorem 4.2)") {
   // The tetrahedron starts at 180 degrees (antipodal points inside two arcs of each face's 1-ring), so its
   // first step cannot grow; later steps compare measures attained inside arcs.
-  MpPushingParams random;
-  random.random.enabled = true;
-  random.random.seed = 5;
-  const Mesh starts[] = {test::cube(), test::tetrahedron(), icosahedron(), cuboid(), random_polyhedron(23)};
-  for (const Mesh& start : starts) {
-    for (const MpPushingParams& p : {p_params(0.5), p_params(0.2, 2.0), p_params(0.8, 0.5), random}) {
-      Mesh m = start;
-      double previous = max_face_angle(m);
-      for (int step = 0; step < 3; ++step) {
-        m = mp_pushing(m, p);
-        const double now = max_face_angle(m);
-        CHECK(now <= previous + 1e-12);
-        previous = now;
-      }
-    }
-  }
+  check_never_grows(
+      {test::cube(), test::tetrahedron(), icosahedron(), cuboid(), random_polyhedron(23)},
+      {p_params(0.5), p_params(0.2, 2.0), p_params(0.8, 0.5), random_params<MpPushingParams>(5)},
+      [](const Mesh& m, const MpPushingParams& p) { return mp_pushing(m, p); }, max_face_angle);
 }
 
 TEST_CASE("mp-pushing: random per-edge ratios and per-vertex taus, reproducible from the seed") {
@@ -687,9 +695,7 @@ TEST_CASE("mhp: counts at every step, valid convex results, equal to the steps r
         expected = mp_pushing(expected, p);
       }
       E *= 4;
-      CHECK(m.num_vertices() == V);
-      CHECK(m.num_edges() == E);
-      CHECK(m.num_faces() == F);
+      check_counts(m, V, E, F);
       CHECK(validate(m).valid());
       CHECK(is_convex_polyhedron(m, centre));
       CHECK(m == expected);
@@ -860,9 +866,7 @@ TEST_CASE("mhp: the paper's patterns run their eight steps with the closed-form 
         V += E, F += 2 * E;
       }
       E *= 4;
-      CHECK(m.num_vertices() == V);
-      CHECK(m.num_edges() == E);
-      CHECK(m.num_faces() == F);
+      check_counts(m, V, E, F);
       if (E < 30000) CHECK(validate(m).valid());
     });
     CHECK(steps == 8);

@@ -32,6 +32,18 @@ Mesh cube_with_tombstones() {
   return m;
 }
 
+// The cube (vertices 0 to 7) with two more vertices, point spheres p = 8 and q = 9.
+struct CubeAndTwo {
+  Mesh mesh;
+  VertexId p, q;
+};
+CubeAndTwo cube_and_two() {
+  Mesh m = test::cube();
+  const VertexId p = m.create_vertex({5, 5, 5});
+  const VertexId q = m.create_vertex({6, 6, 6});
+  return {std::move(m), p, q};
+}
+
 }  // namespace
 
 TEST_CASE("mesh data: sized by the mesh's capacity, every element reading the default") {
@@ -137,9 +149,7 @@ TEST_CASE("mesh data: a container outliving its mesh keeps its values") {
 }
 
 TEST_CASE("mesh data: a copied mesh has no containers; a moved one takes them along") {
-  Mesh a = test::cube();
-  const VertexId p = a.create_vertex({5, 5, 5});  // 8
-  const VertexId q = a.create_vertex({6, 6, 6});  // 9
+  auto [a, p, q] = cube_and_two();
   VertexData<int> tag(a, 0);
   tag[q] = 42;
   a.delete_vertex(p);
@@ -170,9 +180,7 @@ TEST_CASE("mesh data: a copied mesh has no containers; a moved one takes them al
 }
 
 TEST_CASE("mesh data: copies and moves of a container stay attached, destroyed ones let go") {
-  Mesh m = test::cube();
-  const VertexId p = m.create_vertex({5, 5, 5});  // 8
-  const VertexId q = m.create_vertex({6, 6, 6});  // 9
+  auto [m, p, q] = cube_and_two();
   VertexData<int> first(m, 0);
   first[q] = 1;
   VertexData<int> copy = first;

@@ -1,23 +1,53 @@
 #pragma once
-// Small meshes with closed-form counts, shared by the tests.
+// Small meshes with closed-form counts, shared by the tests and the benchmarks (no doctest here).
 
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include <dlfl/build_mesh.h>
+#include <dlfl/cells/cell_complex.h>
 #include <dlfl/polygon_soup.h>
 
 namespace dlfl::test {
 
-inline PolygonSoup tetrahedron_soup() {
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// A soup of the given positions and triangles (vertex indices, in this order).
+inline PolygonSoup triangle_soup(std::vector<glm::dvec3> positions, const std::vector<Triangle>& triangles) {
   PolygonSoup s;
-  s.positions = {{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}};
-  s.add_face({0, 1, 2});
-  s.add_face({0, 3, 1});
-  s.add_face({0, 2, 3});
-  s.add_face({1, 3, 2});
+  s.positions = std::move(positions);
+  for (const auto& t : triangles) s.add_face({t[0], t[1], t[2]});
   return s;
+}
+
+inline PolygonSoup tetrahedron_soup() {
+  return triangle_soup({{1, 1, 1}, {1, -1, -1}, {-1, 1, -1}, {-1, -1, 1}},
+                       {{0, 1, 2}, {0, 3, 1}, {0, 2, 3}, {1, 3, 2}});
+}
+
+/// The regular octahedron (vertices at the unit axis points): V = 6, E = 12, F = 8, every vertex 4-valent.
+inline PolygonSoup octahedron_soup() {
+  return triangle_soup(
+      {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}},
+      {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}});
+}
+
+/// The regular icosahedron: V = 12, E = 30, F = 20, every vertex 5-valent.
+inline PolygonSoup icosahedron_soup() {
+  const double p = std::numbers::phi;
+  const std::vector<glm::dvec3> positions = {{-1, p, 0}, {1, p, 0}, {-1, -p, 0}, {1, -p, 0},
+                                             {0, -1, p}, {0, 1, p}, {0, -1, -p}, {0, 1, -p},
+                                             {p, 0, -1}, {p, 0, 1}, {-p, 0, -1}, {-p, 0, 1}};
+  const std::vector<Triangle> faces = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
+                                       {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
+                                       {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
+                                       {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
+  return triangle_soup(positions, faces);
 }
 
 inline PolygonSoup cube_soup() {
@@ -113,6 +143,18 @@ inline void add_prism_faces(PolygonSoup& s, int n) {
     const auto a = std::uint32_t(i), b = std::uint32_t((i + 1) % n);
     s.add_face({a, b, std::uint32_t(n + b), std::uint32_t(n + a)});
   }
+}
+
+/// A soup of quads (faces as cycles a b c d) as a cell complex of tensor-product quads (a, b, d, c).
+inline CellComplex quads_of(const PolygonSoup& soup) {
+  CellComplex c;
+  c.positions = soup.positions;
+  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
+    const auto q = soup.face(f);
+    if (q.size() != 4) throw std::invalid_argument("quads_of: face " + std::to_string(f) + " is no quad");
+    c.add_cell({q[0], q[1], q[3], q[2]});
+  }
+  return c;
 }
 
 inline Mesh tetrahedron() { return build_mesh(tetrahedron_soup()); }

@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/build_mesh.h>
 #include <dlfl/cells/cell_average.h>
 #include <dlfl/cells/convert.h>
 #include <dlfl/cells/mlca_subdivide.h>
 #include <dlfl/cells/multilinear_subdivide.h>
-#include <dlfl/build_mesh.h>
 #include <dlfl/errors.h>
-#include "scheme_meshes.h"
 #include <dlfl/schemes/catmull_clark.h>
+#include "scheme_meshes.h"
 #include "test_meshes.h"
 #include "test_mlca_cells_util.h"
 
@@ -93,18 +93,6 @@ CellComplex book() {
     c.positions.push_back({1, std::cos(a), std::sin(a)});
     const auto p = std::uint32_t(2 + 2 * page);
     c.add_cell({0, 1, p, p + 1});
-  }
-  return c;
-}
-
-// A quad soup (faces as cycles) as a cell complex: the cycle a b c d is the tensor-product quad (a, b, d, c).
-CellComplex quads_of(const PolygonSoup& soup) {
-  CellComplex c;
-  c.positions = soup.positions;
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    const auto q = soup.face(f);
-    REQUIRE(q.size() == 4);
-    c.add_cell({q[0], q[1], q[3], q[2]});
   }
   return c;
 }

@@ -5,7 +5,6 @@
 
 #ifdef DLFL_TOOL
 #include <filesystem>
-#include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -15,15 +14,6 @@ using namespace dlfl::test;
 
 namespace {
 
-// The octahedron with its top vertex pushed below the equator: planar triangles, concave along the equator.
-std::filesystem::path dented_octahedron_obj() {
-  const auto path = scratch("dented.obj");
-  std::ofstream(path) << "v 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nv 0 0 -0.5\nv 0 0 -1\n"
-                         "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n"
-                         "f 2 1 6\nf 3 2 6\nf 4 3 6\nf 1 4 6\n";
-  return path;
-}
-
 // Exit 2 for a bad parameter (a usage error), 1 for an input the scheme refuses.
 void check_one_line_error(const Run& r, const std::string& needle, int exit_code = 1) {
   CAPTURE(r.err);
@@ -31,6 +21,14 @@ void check_one_line_error(const Run& r, const std::string& needle, int exit_code
   CHECK(r.err.rfind("error: ", 0) == 0);
   CHECK(std::count(r.err.begin(), r.err.end(), '\n') == 1);
   CHECK(r.err.find(needle) != std::string::npos);
+}
+
+// The octahedron with its top vertex pushed below the equator: planar triangles, concave along the equator.
+std::filesystem::path dented_octahedron_obj() {
+  return scratch_file("dented.obj",
+                      "v 1 0 0\nv 0 1 0\nv -1 0 0\nv 0 -1 0\nv 0 0 -0.5\nv 0 0 -1\n"
+                      "f 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n"
+                      "f 2 1 6\nf 3 2 6\nf 4 3 6\nf 1 4 6\n");
 }
 
 }  // namespace
@@ -137,7 +135,8 @@ TEST_CASE("mp tool: bad input and parameters give one error line and write nothi
                        "expected ')'", 2);
   check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-honeycomb --param tau=1.5" + o),
                        "tau", 2);
-  check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-pushing --param tau=0" + o), "tau", 2);
+  check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-pushing --param tau=0" + o), "tau",
+                       2);
   check_one_line_error(run("subdivide " + example("cube.obj") + " -s mp-pushing --param center=1,2" + o),
                        "center", 2);
   // A rejected value is shown as given, not rounded to an allowed one.

@@ -115,15 +115,8 @@ TEST_CASE("sqrt3: affine invariance") {
 TEST_CASE("sqrt3: non-triangles, every hole and point spheres are refused, naming the input's element") {
   // A tombstone face before the offending face: the square pyramid's base split by a diagonal and joined
   // again (one of its triangles is now removed), so the quad base is not at its compacted index.
-  PolygonSoup pyramid;
-  pyramid.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1}};
-  pyramid.add_face({0, 1, 4});
-  pyramid.add_face({1, 2, 4});
-  pyramid.add_face({2, 3, 4});
-  pyramid.add_face({3, 0, 4});
-  pyramid.add_face({0, 3, 2});
-  pyramid.add_face({0, 2, 1});
-  Mesh m = build_mesh(pyramid);
+  Mesh m = build_mesh(triangle_soup({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1}},
+                                    {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}, {0, 3, 2}, {0, 2, 1}}));
   EdgeId diagonal;
   for (CornerId c : m.corners(FaceId(4)))
     if (m.face(m.opposite(c)) == FaceId(5)) diagonal = m.edge(c);

@@ -30,6 +30,13 @@ bool reports(const Mesh& m, ViolationCode code) {
                      [&](const Violation& v) { return v.code == code; });
 }
 
+// A cube that `corrupt` breaks on purpose: the validator reports `code`.
+bool reports_on_cube(ViolationCode code, void (*corrupt)(Mesh&)) {
+  Mesh m = test::cube();
+  corrupt(m);
+  return reports(m, code);
+}
+
 PolygonSoup join(PolygonSoup a, const PolygonSoup& b, glm::dvec3 shift) {
   const auto base = static_cast<std::uint32_t>(a.positions.size());
   for (auto p : b.positions) a.positions.push_back(p + shift);
@@ -77,42 +84,37 @@ TEST_CASE("validate: an open grid closes with one hole face and counts it") {
 }
 
 TEST_CASE("validate: broken next/prev links are caught") {
-  Mesh m = test::cube();
-  auto& c = Access::corners(m);
-  std::swap(c[0].next, c[1].next);
-  CHECK(reports(m, ViolationCode::next_prev));
+  CHECK(reports_on_cube(ViolationCode::next_prev, [](Mesh& m) {
+    auto& c = Access::corners(m);
+    std::swap(c[0].next, c[1].next);
+  }));
 }
 
 TEST_CASE("validate: a corner in the wrong face is caught") {
-  Mesh m = test::cube();
-  Access::corners(m)[5].face = FaceId(3);
-  CHECK(reports(m, ViolationCode::corner_face));
+  CHECK(reports_on_cube(ViolationCode::corner_face, [](Mesh& m) { Access::corners(m)[5].face = FaceId(3); }));
 }
 
 TEST_CASE("validate: a wrong face size is caught") {
-  Mesh m = test::cube();
-  Access::faces(m)[2].size = 5;
-  CHECK(reports(m, ViolationCode::face_size));
+  CHECK(reports_on_cube(ViolationCode::face_size, [](Mesh& m) { Access::faces(m)[2].size = 5; }));
 }
 
 TEST_CASE("validate: an edge whose sides disagree is caught") {
-  Mesh m = test::cube();
-  auto& e = Access::edges(m);
-  std::swap(e[0].corner, e[1].corner);
-  CHECK(reports(m, ViolationCode::edge_corner));
+  CHECK(reports_on_cube(ViolationCode::edge_corner, [](Mesh& m) {
+    auto& e = Access::edges(m);
+    std::swap(e[0].corner, e[1].corner);
+  }));
 }
 
 TEST_CASE("validate: a reference to a removed element is caught") {
-  Mesh m = test::cube();
-  Access::corners(m)[7].edge = EdgeId(1000);
-  CHECK(reports(m, ViolationCode::removed_reference));
+  CHECK(reports_on_cube(ViolationCode::removed_reference,
+                        [](Mesh& m) { Access::corners(m)[7].edge = EdgeId(1000); }));
 }
 
 TEST_CASE("validate: a bad vertex representative is caught") {
-  Mesh m = test::cube();
-  auto& vc = Access::vertex_corner(m);
-  std::swap(vc[0], vc[1]);
-  CHECK(reports(m, ViolationCode::vertex_corner));
+  CHECK(reports_on_cube(ViolationCode::vertex_corner, [](Mesh& m) {
+    auto& vc = Access::vertex_corner(m);
+    std::swap(vc[0], vc[1]);
+  }));
 }
 
 TEST_CASE("validate: a pinched vertex is caught") {
@@ -137,7 +139,5 @@ TEST_CASE("validate: a malformed point sphere is caught") {
 }
 
 TEST_CASE("validate: stale counts are caught") {
-  Mesh m = test::cube();
-  Access::live_vertices(m) += 1;
-  CHECK(reports(m, ViolationCode::counts));
+  CHECK(reports_on_cube(ViolationCode::counts, [](Mesh& m) { Access::live_vertices(m) += 1; }));
 }

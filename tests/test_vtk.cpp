@@ -1,5 +1,6 @@
-// VTK legacy unstructured grids (dlfl/cells/vtk.h): the vertex-order mapping on a hand-made unit cube, ASCII and
-// binary round trips with bit-identical positions, version 5 files, and every bad-input error with its line.
+// VTK legacy unstructured grids (dlfl/cells/vtk.h): the vertex-order mapping on a hand-made unit cube, ASCII
+// and binary round trips with bit-identical positions, version 5 files, and every bad-input error with its
+// line.
 
 #include <doctest/doctest.h>
 
@@ -11,10 +12,10 @@
 #include <string>
 #include <vector>
 
-#include "cell_file_helpers.h"
-#include <dlfl/errors.h>
 #include <dlfl/cells/cell_io.h>
 #include <dlfl/cells/vtk.h>
+#include <dlfl/errors.h>
+#include "cell_file_helpers.h"
 
 using namespace dlfl;
 
@@ -218,6 +219,7 @@ TEST_CASE("vtk: every bad input is an IoError naming the file and line") {
   truncated.resize(8);  // POINTS 4, but only three points
   auto no_types = base_lines();
   no_types.resize(12);
+  // The base file with one line changed, then whole files.
   const std::vector<Case> cases = {
       {"unsupported cell type", with_line(15, "5"), 15, "unsupported type 5 (TRIANGLE)"},
       {"wrong vertex count", with_line(15, "1"), 12, "VERTEX has 2 points; it needs 1"},
@@ -232,12 +234,12 @@ TEST_CASE("vtk: every bad input is an IoError naming the file and line") {
       {"other dataset", with_line(4, "DATASET POLYDATA"), 4, "unsupported dataset 'POLYDATA'"},
       {"type count", with_line(13, "CELL_TYPES 3"), 13, "CELL_TYPES has 3 entries for 2 cells"},
       {"cells size", with_line(10, "CELLS 2 9"), 0, "CELLS size 9 but the lists hold 8"},
+      {"negative count", with_line(10, "CELLS -2 8"), 10, "CELLS count is negative"},
+      {"huge count", with_line(5, "POINTS 99999999 double"), 5,
+       "POINTS count is 99999999 but the file is too short"},
       {"truncated points", join(truncated), 0, "truncated file"},
       {"truncated cells", join(no_types), 0, "CELLS without CELL_TYPES"},
       {"empty file", "", 0, "truncated file"},
-      {"huge count", with_line(5, "POINTS 99999999 double"), 5,
-       "POINTS count is 99999999 but the file is too short"},
-      {"negative count", with_line(10, "CELLS -2 8"), 10, "CELLS count is negative"},
   };
   for (const Case& c : cases) {
     INFO(c.what);

@@ -38,35 +38,6 @@ inline PolygonSoup triangulated(const PolygonSoup& soup) {
   return t;
 }
 
-/// The regular octahedron (vertices at the unit axis points): V = 6, E = 12, F = 8, every vertex 4-valent.
-inline PolygonSoup octahedron_soup() {
-  PolygonSoup s;
-  s.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  s.add_face({0, 2, 4});
-  s.add_face({2, 1, 4});
-  s.add_face({1, 3, 4});
-  s.add_face({3, 0, 4});
-  s.add_face({2, 0, 5});
-  s.add_face({1, 2, 5});
-  s.add_face({3, 1, 5});
-  s.add_face({0, 3, 5});
-  return s;
-}
-
-/// The regular icosahedron: V = 12, E = 30, F = 20, every vertex 5-valent.
-inline PolygonSoup icosahedron_soup() {
-  const double p = std::numbers::phi;
-  PolygonSoup s;
-  s.positions = {{-1, p, 0},  {1, p, 0},  {-1, -p, 0}, {1, -p, 0}, {0, -1, p},  {0, 1, p},
-                 {0, -1, -p}, {0, 1, -p}, {p, 0, -1},  {p, 0, 1},  {-p, 0, -1}, {-p, 0, 1}};
-  const std::uint32_t faces[20][3] = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                      {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                      {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                      {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (const auto& f : faces) s.add_face({f[0], f[1], f[2]});
-  return s;
-}
-
 /// Both soups in one, the second moved by `offset`: a mesh of two components.
 inline PolygonSoup disjoint_union(const PolygonSoup& a, const PolygonSoup& b, const glm::dvec3& offset) {
   PolygonSoup u = a;

@@ -6,11 +6,6 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   using namespace dlfl;
-  if (size > fuzz::max_mesh_file) return 0;
-  try {
-    fuzz::check_polygon_file(fuzz::text_of(data, size), io_detail::parse_obj_text,
-                             {[](std::ostream& out, const PolygonSoup& soup) { write_obj(out, soup); }});
-  } catch (const Error&) {
-  }
-  return 0;
+  return fuzz::fuzz_polygon_file(data, size, io_detail::parse_obj_text,
+                                 {[](std::ostream& out, const PolygonSoup& soup) { write_obj(out, soup); }});
 }

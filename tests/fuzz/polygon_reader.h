@@ -2,7 +2,9 @@
 // The body of the OBJ, OFF and PLY harnesses: parse a file held in memory, build the mesh, and check what a
 // successful read promises: the mesh validates, and it writes and reads back to the same polygons.
 
+#include <cstdint>
 #include <functional>
+#include <initializer_list>
 #include <sstream>
 #include <string>
 #include <string_view>
@@ -51,6 +53,18 @@ inline void check_polygon_file(std::string_view text, Parser parse, std::initial
     }
     check(same_polygons(soup, again), "what was read reads back different after writing");
   }
+}
+
+/// The whole harness of a polygon format: inputs over the cap are skipped, and bad input (a dlfl::Error) is
+/// what a reader may answer, not a finding.
+inline int fuzz_polygon_file(const std::uint8_t* data, std::size_t size, Parser parse,
+                             std::initializer_list<Writer> writers) {
+  if (size > max_mesh_file) return 0;
+  try {
+    check_polygon_file(text_of(data, size), parse, writers);
+  } catch (const Error&) {
+  }
+  return 0;
 }
 
 }  // namespace dlfl::fuzz

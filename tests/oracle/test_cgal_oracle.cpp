@@ -7,14 +7,14 @@
 #include <cmath>
 #include <numbers>
 
-#include "../scheme_meshes.h"
-#include "../test_meshes.h"
-#include "../triangle_meshes.h"
-#include "cgal_compare.h"
 #include <dlfl/schemes/catmull_clark.h>
 #include <dlfl/schemes/doo_sabin.h>
 #include <dlfl/schemes/loop.h>
 #include <dlfl/schemes/sqrt3.h>
+#include "../scheme_meshes.h"
+#include "../test_meshes.h"
+#include "../triangle_meshes.h"
+#include "cgal_compare.h"
 
 using namespace dlfl;
 using namespace dlfl::oracle;
@@ -80,35 +80,47 @@ std::vector<PolygonSoup> closed_triangle_meshes() {
           perturbed(test::triangulated(test::genus_soup(1)))};
 }
 
+// Two steps of our scheme and two of CGAL's (`cgal`, given the iteration count) on every soup: the same
+// polygons (positions to 1e-12), after a check of our face count against its closed form `faces`.
+template <class Ours, class Cgal, class Faces>
+void check_two_steps_agree(const std::vector<PolygonSoup>& soups, Ours ours_step, Cgal cgal, Faces faces) {
+  for (const PolygonSoup& soup : soups) {
+    CAPTURE(soup.num_faces());
+    SurfaceMesh sm = to_cgal(soup);
+    cgal(sm, CGAL::parameters::number_of_iterations(2));
+    const Mesh ours = ours_step(ours_step(build_mesh(soup)));
+    CHECK(ours.num_faces() == faces(soup));
+    require_same(to_polygons(ours), from_cgal(sm));
+  }
+}
+
 }  // namespace
 
 TEST_CASE("oracle: catmull-clark agrees with CGAL on closed meshes") {
-  for (const PolygonSoup& soup : closed_meshes()) {
-    CAPTURE(soup.num_faces());
-    SurfaceMesh sm = to_cgal(soup);
-    CGAL::Subdivision_method_3::CatmullClark_subdivision(sm, CGAL::parameters::number_of_iterations(2));
-    const Mesh ours = catmull_clark(catmull_clark(build_mesh(soup)));
-    // Every corner becomes a quad, so step 1 has C quads and step 2 has 4 C.
-    CHECK(ours.num_faces() == 4 * soup.indices.size());
-    require_same(to_polygons(ours), from_cgal(sm));
-  }
+  // Every corner becomes a quad, so step 1 has C quads and step 2 has 4 C.
+  check_two_steps_agree(
+      closed_meshes(), [](const Mesh& m) { return catmull_clark(m); },
+      [](SurfaceMesh& sm, auto iterations) {
+        CGAL::Subdivision_method_3::CatmullClark_subdivision(sm, iterations);
+      },
+      [](const PolygonSoup& soup) { return 4 * soup.indices.size(); });
 }
 
 TEST_CASE("oracle: doo-sabin agrees with CGAL on closed meshes") {
   // CGAL's DooSabin_mask_3 uses alpha_0 = (5/n + 1)/4 and alpha_k = (3 + 2 cos(2 pi k / n)) / (4n), our
   // weights, with the quad case written out as 9/16, 3/16, 1/16, 3/16; its DQQ step makes the same F-, E- and
   // V-faces.
-  for (const PolygonSoup& soup : closed_polygon_meshes()) {
-    CAPTURE(soup.num_faces());
-    SurfaceMesh sm = to_cgal(soup);
-    CGAL::Subdivision_method_3::DooSabin_subdivision(sm, CGAL::parameters::number_of_iterations(2));
-    const Mesh ours = doo_sabin(doo_sabin(build_mesh(soup)));
-    // Step 1: F1 = V + E + F, with one vertex per corner (V1 = C), each 4-valent (E1 = 2 C); step 2:
-    // F2 = V1 + E1 + F1 = 3 C + V + E + F, with E = C / 2 on a closed mesh.
-    const std::size_t c = soup.indices.size();
-    CHECK(ours.num_faces() == 3 * c + soup.positions.size() + c / 2 + soup.num_faces());
-    require_same(to_polygons(ours), from_cgal(sm));
-  }
+  // Step 1: F1 = V + E + F, with one vertex per corner (V1 = C), each 4-valent (E1 = 2 C); step 2:
+  // F2 = V1 + E1 + F1 = 3 C + V + E + F, with E = C / 2 on a closed mesh.
+  check_two_steps_agree(
+      closed_polygon_meshes(), [](const Mesh& m) { return doo_sabin(m); },
+      [](SurfaceMesh& sm, auto iterations) {
+        CGAL::Subdivision_method_3::DooSabin_subdivision(sm, iterations);
+      },
+      [](const PolygonSoup& soup) {
+        const std::size_t c = soup.indices.size();
+        return 3 * c + soup.positions.size() + c / 2 + soup.num_faces();
+      });
 }
 
 TEST_CASE("oracle: loop agrees with CGAL on closed triangle meshes") {
@@ -116,14 +128,10 @@ TEST_CASE("oracle: loop agrees with CGAL on closed triangle meshes") {
   // C_n = 5/8 - (3 + 2 cos(2 pi / n))^2 / 64 = n beta, i.e. (1 - n beta) S + beta R (and 10/16, 1/16 for n =
   // 6), and the edge rule as (3 (a + b) + c + d) / 8: the same rules, rounded differently (well below 1e-12
   // here).
-  for (const PolygonSoup& soup : closed_triangle_meshes()) {
-    CAPTURE(soup.num_faces());
-    SurfaceMesh sm = to_cgal(soup);
-    CGAL::Subdivision_method_3::Loop_subdivision(sm, CGAL::parameters::number_of_iterations(2));
-    const Mesh ours = loop(loop(build_mesh(soup)));
-    CHECK(ours.num_faces() == 16 * soup.num_faces());  // 4 F per step
-    require_same(to_polygons(ours), from_cgal(sm));
-  }
+  check_two_steps_agree(
+      closed_triangle_meshes(), [](const Mesh& m) { return loop(m); },
+      [](SurfaceMesh& sm, auto iterations) { CGAL::Subdivision_method_3::Loop_subdivision(sm, iterations); },
+      [](const PolygonSoup& soup) { return 16 * soup.num_faces(); });  // 4 F per step
 }
 
 TEST_CASE("oracle: sqrt3 agrees with CGAL on closed triangle meshes") {
@@ -131,12 +139,8 @@ TEST_CASE("oracle: sqrt3 agrees with CGAL on closed triangle meshes") {
   // a_n = (4 - 2 cos(2 pi / n)) / 9, add_center_vertex per triangle, then every old edge flipped by join_face
   // and split_face: the same rules and the same flip, so the triangles (with their orientation) agree too.
   // Its boundary rule (every second step) is not compared: we refuse open meshes.
-  for (const PolygonSoup& soup : closed_triangle_meshes()) {
-    CAPTURE(soup.num_faces());
-    SurfaceMesh sm = to_cgal(soup);
-    CGAL::Subdivision_method_3::Sqrt3_subdivision(sm, CGAL::parameters::number_of_iterations(2));
-    const Mesh ours = sqrt3(sqrt3(build_mesh(soup)));
-    CHECK(ours.num_faces() == 9 * soup.num_faces());  // 3 F per step
-    require_same(to_polygons(ours), from_cgal(sm));
-  }
+  check_two_steps_agree(
+      closed_triangle_meshes(), [](const Mesh& m) { return sqrt3(m); },
+      [](SurfaceMesh& sm, auto iterations) { CGAL::Subdivision_method_3::Sqrt3_subdivision(sm, iterations); },
+      [](const PolygonSoup& soup) { return 9 * soup.num_faces(); });  // 3 F per step
 }
