@@ -537,6 +537,20 @@ class Mesh {
     } while (c != start);
     return moved;
   }
+  // Steps x and y along their face together until x reaches `x_stop` or y reaches `y_stop`: how a split
+  // measures its two parts in O(the smaller one). `x_first` tells which got there, after `steps` steps.
+  struct FirstArrival {
+    std::uint32_t steps = 0;
+    bool x_first = false;
+  };
+  FirstArrival first_arrival(CornerId x, CornerId x_stop, CornerId y, CornerId y_stop) const {
+    for (std::uint32_t k = 1;; ++k) {
+      x = next(x);
+      y = next(y);
+      if (x == x_stop) return {k, true};
+      if (y == y_stop) return {k, false};
+    }
+  }
   // The live hole faces, counted from scratch: for the builders that write the arrays directly.
   std::size_t count_hole_faces() const;
 
