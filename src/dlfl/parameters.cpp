@@ -21,37 +21,30 @@ std::string_view to_string(ParamType type) {
 }
 
 namespace {
-// What each ParamType holds, in the enumeration's order: the type of its items (itself for a single value)
-// and what a message says a value must be.
-struct TypeInfo {
-  ParamType item;
-  const char* expected;
-};
-constexpr TypeInfo type_info[] = {
-    {ParamType::boolean, "true or false"},
-    {ParamType::integer, "a whole number"},
-    {ParamType::number, "a number"},
-    {ParamType::text, "text"},
-    {ParamType::point, "a point x,y,z"},
-    {ParamType::vertex, "a vertex handle (its number)"},
-    {ParamType::edge, "a edge handle (its number)"},
-    {ParamType::face, "a face handle (its number)"},
-    {ParamType::corner, "a corner handle (its number)"},
-    {ParamType::vertex, "a list of vertex handles a,b,c"},
-    {ParamType::edge, "a list of edge handles a,b,c"},
-    {ParamType::face, "a list of face handles a,b,c"},
-    {ParamType::corner, "a list of corner handles a,b,c"},
-    {ParamType::number, "a list of numbers a,b,c"},
-    {ParamType::point, "a list of points x,y,z;x,y,z"},
-    {ParamType::mesh, "a mesh"},
-    {ParamType::params, "a parameter set"},
-};
-static_assert(std::size(type_info) == std::size_t(ParamType::params) + 1,
+// What each ParamType holds, in the enumeration's order: the type of its items (itself for a single value),
+// and what a message says a value of it must be.
+using P = ParamType;
+constexpr ParamType item_types[] = {P::boolean, P::integer, P::number, P::text,   P::point, P::vertex,
+                                    P::edge,    P::face,    P::corner, P::vertex, P::edge,  P::face,
+                                    P::corner,  P::number,  P::point,  P::mesh,   P::params};
+constexpr const char* expected_values[] = {
+    // single values
+    "true or false", "a whole number", "a number", "text", "a point x,y,z",
+    // one handle: "a edge" as the messages have always said
+    "a vertex handle (its number)", "a edge handle (its number)", "a face handle (its number)",
+    "a corner handle (its number)",
+    // lists
+    "a list of vertex handles a,b,c", "a list of edge handles a,b,c", "a list of face handles a,b,c",
+    "a list of corner handles a,b,c", "a list of numbers a,b,c", "a list of points x,y,z;x,y,z",
+    // whole objects
+    "a mesh", "a parameter set"};
+static_assert(std::size(item_types) == std::size_t(ParamType::params) + 1 &&
+                  std::size(expected_values) == std::size(item_types),
               "an entry per enumerator, in order");
 
 // The list element types and the single-value type each list holds.
 ParamType element_type(ParamType t) {
-  return std::size_t(t) < std::size(type_info) ? type_info[std::size_t(t)].item : t;
+  return std::size_t(t) < std::size(item_types) ? item_types[std::size_t(t)] : t;
 }
 
 bool is_single_handle(ParamType t) {
@@ -341,9 +334,7 @@ std::optional<Value> read_list(std::string_view text, char separator, Read read)
   return Value(std::move(out));
 }
 
-std::string expected(ParamType t) {
-  return std::size_t(t) < std::size(type_info) ? type_info[std::size_t(t)].expected : "?";
-}
+std::string expected(ParamType t) { return detail::name_at(t, expected_values, "?"); }
 
 std::string shown(const Value& v) {
   const std::string t = v.to_text();
