@@ -69,21 +69,9 @@ DeleteEdgeResult Mesh::delete_edge(EdgeId e, const detail::Reuse& reuse) {
   } else if (dangling_w && !dangling_u) {
     length_u = size(f) - 2;
   } else if (!dangling_u && !dangling_w) {
-    CornerId x = x1, y = x0;
-    for (std::uint32_t k = 1;; ++k) {
-      x = next(x);
-      y = next(y);
-      if (x == s0) {
-        length_u = k;
-        length_w = size(f) - 2 - k;
-        break;
-      }
-      if (y == s1) {
-        length_w = k;
-        length_u = size(f) - 2 - k;
-        break;
-      }
-    }
+    const FirstArrival walk = first_arrival(x1, s0, x0, s1);
+    length_u = walk.x_first ? walk.steps : size(f) - 2 - walk.steps;
+    length_w = size(f) - 2 - length_u;
   }
   const CornerId start_u = dangling_u ? s0 : x1;
   const CornerId start_w = dangling_w ? s1 : x0;

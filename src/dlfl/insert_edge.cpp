@@ -46,21 +46,9 @@ InsertEdgeResult Mesh::insert_edge(CornerId c1, CornerId c2, const detail::Reuse
   // corners).
   std::uint32_t length_a = 0, length_b = 0;
   if (f1 == f2) {
-    CornerId x = c1, y = c2;
-    for (std::uint32_t k = 1;; ++k) {
-      x = next(x);
-      y = next(y);
-      if (x == c2) {
-        length_b = k;
-        length_a = size(f1) - k;
-        break;
-      }
-      if (y == c1) {
-        length_a = k;
-        length_b = size(f1) - k;
-        break;
-      }
-    }
+    const FirstArrival walk = first_arrival(c1, c2, c2, c1);
+    length_b = walk.x_first ? walk.steps : size(f1) - walk.steps;
+    length_a = size(f1) - length_b;
   }
 
   const CornerId n1 = sphere1 ? c1 : new_corner(reuse1);

@@ -175,12 +175,8 @@ void Mesh::delete_vertex(VertexId v, const detail::Reuse& reuse) {
 Step Mesh::apply(const Step& step) {
   Step inverse;
   switch (step.kind) {
-    case Step::Kind::create_vertex: {
-      VertexId v = create_vertex(step.position, step.reuse);
-      inverse.kind = Step::Kind::delete_vertex;
-      inverse.vertex = v;
-      return inverse;
-    }
+    case Step::Kind::create_vertex:
+      return {.kind = Step::Kind::delete_vertex, .vertex = create_vertex(step.position, step.reuse)};
     case Step::Kind::delete_vertex: {
       require(step.vertex, "delete_vertex");
       CornerId c = corner(step.vertex);
@@ -197,12 +193,9 @@ Step Mesh::apply(const Step& step) {
       return insert_edge(step.corner1, step.corner2, step.reuse).inverse;
     case Step::Kind::delete_edge:
       return delete_edge(step.edge, step.reuse).inverse;
-    case Step::Kind::subdivide_edge: {
-      VertexId v = subdivide_edge(step.edge, step.position, step.reuse);
-      inverse.kind = Step::Kind::unsubdivide_edge;
-      inverse.vertex = v;
-      return inverse;
-    }
+    case Step::Kind::subdivide_edge:
+      return {.kind = Step::Kind::unsubdivide_edge,
+              .vertex = subdivide_edge(step.edge, step.position, step.reuse)};
     case Step::Kind::unsubdivide_edge: {
       require(step.vertex, "unsubdivide_edge");
       // Record what subdivide_edge needs to rebuild exactly this vertex (checked again by unsubdivide_edge).
@@ -225,21 +218,18 @@ Step Mesh::apply(const Step& step) {
       unsubdivide_edge(step.vertex, step.reuse);
       return inverse;
     }
+    // A setter is undone by the same setter with the old value.
     case Step::Kind::set_hole: {
       require(step.face, "set_hole");
-      inverse.kind = Step::Kind::set_hole;
-      inverse.face = step.face;
-      inverse.hole = is_hole(step.face);
+      const bool old = is_hole(step.face);
       set_hole(step.face, step.hole);
-      return inverse;
+      return {.kind = Step::Kind::set_hole, .hole = old, .face = step.face};
     }
     case Step::Kind::set_position: {
       require(step.vertex, "set_position");
-      inverse.kind = Step::Kind::set_position;
-      inverse.vertex = step.vertex;
-      inverse.position = position(step.vertex);
+      const glm::dvec3 old = position(step.vertex);
       set_position(step.vertex, step.position);
-      return inverse;
+      return {.kind = Step::Kind::set_position, .vertex = step.vertex, .position = old};
     }
   }
   throw InvalidArgument("apply: unknown step kind");

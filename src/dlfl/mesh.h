@@ -16,6 +16,8 @@
 #include <dlfl/attributes.h>
 #include <dlfl/compact_map.h>
 #include <dlfl/detail/attribute_set.h>
+#include <dlfl/detail/filtered_handles.h>
+#include <dlfl/detail/forward_iterator.h>
 #include <dlfl/detail/large_allocator.h>
 #include <dlfl/detail/mesh_listeners.h>
 #include <dlfl/handles.h>
@@ -535,6 +537,20 @@ class Mesh {
     } while (c != start);
     return moved;
   }
+  // Steps x and y along their face together until x reaches `x_stop` or y reaches `y_stop`: how a split
+  // measures its two parts in O(the smaller one). `x_first` tells which got there, after `steps` steps.
+  struct FirstArrival {
+    std::uint32_t steps = 0;
+    bool x_first = false;
+  };
+  FirstArrival first_arrival(CornerId x, CornerId x_stop, CornerId y, CornerId y_stop) const {
+    for (std::uint32_t k = 1;; ++k) {
+      x = next(x);
+      y = next(y);
+      if (x == x_stop) return {k, true};
+      if (y == y_stop) return {k, false};
+    }
+  }
   // The live hole faces, counted from scratch: for the builders that write the arrays directly.
   std::size_t count_hole_faces() const;
 
@@ -566,46 +582,20 @@ class Mesh {
 // ---- ranges
 // --------------------------------------------------------------------------------------------------
 
+namespace detail {
+struct IsAlive {
+  template <class H>
+  static bool keep(const Mesh& mesh, H h) {
+    return mesh.is_alive(h);
+  }
+};
+}  // namespace detail
+
+/// The live elements of kind H, in increasing handle order.
 template <class H>
-class Mesh::LiveRange {
+class Mesh::LiveRange : public detail::FilteredHandles<H, detail::IsAlive> {
  public:
-  class iterator {
-   public:
-    using value_type = H;
-    using difference_type = std::ptrdiff_t;
-    iterator() = default;
-    iterator(const Mesh* mesh, std::uint32_t index, std::uint32_t end)
-        : mesh_(mesh), index_(index), end_(end) {
-      skip();
-    }
-    H operator*() const { return H(index_); }
-    iterator& operator++() {
-      ++index_;
-      skip();
-      return *this;
-    }
-    iterator operator++(int) {
-      iterator old = *this;
-      ++*this;
-      return old;
-    }
-    bool operator==(const iterator& o) const { return index_ == o.index_; }
-
-   private:
-    void skip() {
-      while (index_ < end_ && !mesh_->is_alive(H(index_))) ++index_;
-    }
-    const Mesh* mesh_ = nullptr;
-    std::uint32_t index_ = 0;
-    std::uint32_t end_ = 0;
-  };
-  LiveRange(const Mesh* mesh, std::uint32_t end) : mesh_(mesh), end_(end) {}
-  iterator begin() const { return iterator(mesh_, 0, end_); }
-  iterator end() const { return iterator(mesh_, end_, end_); }
-
- private:
-  const Mesh* mesh_;
-  std::uint32_t end_;
+  using detail::FilteredHandles<H, detail::IsAlive>::FilteredHandles;
 };
 
 /// The corners met by stepping from a first corner until it comes round again: the corners of a face
@@ -614,26 +604,22 @@ class Mesh::LiveRange {
 template <class Advance>
 class CornerCycle {
  public:
-  class iterator {
+  class iterator : public detail::ForwardIterator<iterator, CornerId> {
    public:
-    using value_type = CornerId;
-    using difference_type = std::ptrdiff_t;
     iterator() = default;
+    /// At corner `c` of the cycle from `c`; `done` makes it the end.
     iterator(const Mesh* mesh, CornerId c, bool done) : mesh_(mesh), first_(c), c_(c), done_(done) {}
+    /// The corner.
     CornerId operator*() const { return c_; }
-    iterator& operator++() {
-      c_ = Advance::step(*mesh_, c_);
-      done_ = c_ == first_;
-      return *this;
-    }
-    iterator operator++(int) {
-      iterator old = *this;
-      ++*this;
-      return old;
-    }
+    /// Both at the end, or at the same corner.
     bool operator==(const iterator& o) const { return done_ == o.done_ && (done_ || c_ == o.c_); }
 
    private:
+    friend detail::ForwardIterator<iterator, CornerId>;
+    void advance() {
+      c_ = Advance::step(*mesh_, c_);
+      done_ = c_ == first_;
+    }
     const Mesh* mesh_ = nullptr;
     CornerId first_, c_;
     bool done_ = true;

@@ -16,6 +16,7 @@
 #include <cstddef>
 #include <utility>
 
+#include <dlfl/detail/forward_iterator.h>
 #include <dlfl/mesh.h>
 
 namespace dlfl {
@@ -23,26 +24,23 @@ namespace dlfl {
 /// The corners of a cycle (see `CornerCycle`), each shown as `Map::of(mesh, corner)`.
 template <class Advance, class Map>
 class MappedCorners {
+  // What the range gives per corner: a VertexId, EdgeId or FaceId.
+  using Value = decltype(Map::of(std::declval<const Mesh&>(), CornerId()));
+
  public:
-  class iterator {
+  class iterator : public detail::ForwardIterator<iterator, Value> {
    public:
-    using value_type = decltype(Map::of(std::declval<const Mesh&>(), CornerId()));
-    using difference_type = std::ptrdiff_t;
     iterator() = default;
+    /// At the corner `at` of the cycle.
     iterator(const Mesh* mesh, typename CornerCycle<Advance>::iterator at) : mesh_(mesh), at_(at) {}
-    value_type operator*() const { return Map::of(*mesh_, *at_); }
-    iterator& operator++() {
-      ++at_;
-      return *this;
-    }
-    iterator operator++(int) {
-      iterator old = *this;
-      ++*this;
-      return old;
-    }
+    /// The element of the corner.
+    Value operator*() const { return Map::of(*mesh_, *at_); }
+    /// The same place in the cycle.
     bool operator==(const iterator& o) const { return at_ == o.at_; }
 
    private:
+    friend detail::ForwardIterator<iterator, Value>;
+    void advance() { ++at_; }
     const Mesh* mesh_ = nullptr;
     typename CornerCycle<Advance>::iterator at_;
   };
@@ -126,44 +124,17 @@ bool is_boundary(const Mesh& mesh, VertexId v);
 /// True if a hole face is on either side of e. Throws InvalidArgument for a removed edge.
 bool is_boundary(const Mesh& mesh, EdgeId e);
 
+namespace detail {
+struct IsSurfaceFace {
+  static bool keep(const Mesh& mesh, FaceId f) { return mesh.is_alive(f) && !mesh.is_hole(f); }
+};
+}  // namespace detail
+
 /// The live faces that are not holes, in increasing handle order; `mesh.num_surface_faces()` counts them.
-class SurfaceFaces {
+class SurfaceFaces : public detail::FilteredHandles<FaceId, detail::IsSurfaceFace> {
  public:
-  class iterator {
-   public:
-    using value_type = FaceId;
-    using difference_type = std::ptrdiff_t;
-    iterator() = default;
-    iterator(const Mesh* mesh, Mesh::LiveRange<FaceId>::iterator at, Mesh::LiveRange<FaceId>::iterator end)
-        : mesh_(mesh), at_(at), end_(end) {
-      skip();
-    }
-    FaceId operator*() const { return *at_; }
-    iterator& operator++() {
-      ++at_;
-      skip();
-      return *this;
-    }
-    iterator operator++(int) {
-      iterator old = *this;
-      ++*this;
-      return old;
-    }
-    bool operator==(const iterator& o) const { return at_ == o.at_; }
-
-   private:
-    void skip() {
-      while (!(at_ == end_) && mesh_->is_hole(*at_)) ++at_;
-    }
-    const Mesh* mesh_ = nullptr;
-    Mesh::LiveRange<FaceId>::iterator at_, end_;
-  };
-  explicit SurfaceFaces(const Mesh& mesh) : mesh_(&mesh) {}
-  iterator begin() const { return iterator(mesh_, mesh_->faces().begin(), mesh_->faces().end()); }
-  iterator end() const { return iterator(mesh_, mesh_->faces().end(), mesh_->faces().end()); }
-
- private:
-  const Mesh* mesh_;
+  /// The surface faces of `mesh`.
+  explicit SurfaceFaces(const Mesh& mesh) : FilteredHandles(&mesh, mesh.face_capacity()) {}
 };
 
 /// The surface faces of a mesh (see `SurfaceFaces`).

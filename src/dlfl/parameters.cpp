@@ -20,6 +20,38 @@ std::string_view to_string(ParamType type) {
   return detail::name_at(type, names, "?");
 }
 
+namespace {
+// What each ParamType holds, in the enumeration's order: the type of its items (itself for a single value),
+// and what a message says a value of it must be.
+using P = ParamType;
+constexpr ParamType item_types[] = {P::boolean, P::integer, P::number, P::text,   P::point, P::vertex,
+                                    P::edge,    P::face,    P::corner, P::vertex, P::edge,  P::face,
+                                    P::corner,  P::number,  P::point,  P::mesh,   P::params};
+constexpr const char* expected_values[] = {
+    // single values
+    "true or false", "a whole number", "a number", "text", "a point x,y,z",
+    // one handle: "a edge" as the messages have always said
+    "a vertex handle (its number)", "a edge handle (its number)", "a face handle (its number)",
+    "a corner handle (its number)",
+    // lists
+    "a list of vertex handles a,b,c", "a list of edge handles a,b,c", "a list of face handles a,b,c",
+    "a list of corner handles a,b,c", "a list of numbers a,b,c", "a list of points x,y,z;x,y,z",
+    // whole objects
+    "a mesh", "a parameter set"};
+static_assert(std::size(item_types) == std::size_t(ParamType::params) + 1 &&
+                  std::size(expected_values) == std::size(item_types),
+              "an entry per enumerator, in order");
+
+// The list element types and the single-value type each list holds.
+ParamType element_type(ParamType t) {
+  return std::size_t(t) < std::size(item_types) ? item_types[std::size_t(t)] : t;
+}
+
+bool is_single_handle(ParamType t) {
+  return t == ParamType::vertex || t == ParamType::edge || t == ParamType::face || t == ParamType::corner;
+}
+}  // namespace
+
 // ---- Value
 // ---------------------------------------------------------------------------------------------------
 
@@ -41,10 +73,15 @@ const T& held(const V& v, Value::Kind actual, Value::Kind wanted) {
   throw InvalidArgument(std::string("expected ") + kind_name(wanted) + ", got " + kind_name(actual));
 }
 
-// Appends `item` to a `separator`-separated list.
-void append(std::string& list, const char* separator, const std::string& item) {
-  if (!list.empty()) list += separator;
-  list += item;
+// The `text` of each item, `separator`-separated.
+template <class List, class Text>
+std::string joined(const List& items, const char* separator, Text text) {
+  std::string list;
+  for (const auto& item : items) {
+    if (!list.empty()) list += separator;
+    list += text(item);
+  }
+  return list;
 }
 
 std::string point_text(const glm::dvec3& p) {
@@ -95,28 +132,17 @@ std::string Value::to_text() const {
       return as_text();
     case Kind::point:
       return point_text(as_point());
-    case Kind::integers: {
-      std::string s;
-      for (auto i : as_integers()) append(s, ",", std::to_string(i));
-      return s;
-    }
-    case Kind::numbers: {
-      std::string s;
-      for (auto d : as_numbers()) append(s, ",", format_number(d));
-      return s;
-    }
-    case Kind::points: {
-      std::string s;
-      for (const auto& p : as_points()) append(s, ";", point_text(p));
-      return s;
-    }
+    case Kind::integers:
+      return joined(as_integers(), ",", [](std::int64_t i) { return std::to_string(i); });
+    case Kind::numbers:
+      return joined(as_numbers(), ",", format_number);
+    case Kind::points:
+      return joined(as_points(), ";", point_text);
     case Kind::mesh:
       return "[mesh]";
-    case Kind::params: {
-      std::string s;
-      for (const auto& [k, v] : as_params()) append(s, " ", k + "=" + v.to_text());
-      return "{" + s + "}";
-    }
+    case Kind::params:
+      return "{" +
+             joined(as_params(), " ", [](const auto& p) { return p.first + "=" + p.second.to_text(); }) + "}";
   }
   return "";
 }
@@ -188,21 +214,7 @@ ParamSpec& ParamSpec::one_of(std::vector<std::string> words) {
   return *this;
 }
 
-bool ParamSpec::is_handle() const {
-  switch (type) {
-    case ParamType::vertex:
-    case ParamType::edge:
-    case ParamType::face:
-    case ParamType::corner:
-    case ParamType::vertices:
-    case ParamType::edges:
-    case ParamType::faces:
-    case ParamType::corners:
-      return true;
-    default:
-      return false;
-  }
-}
+bool ParamSpec::is_handle() const { return is_single_handle(element_type(type)); }
 
 std::string ParamSpec::range_text() const {
   if (std::isinf(min) && std::isinf(max)) return "";
@@ -239,21 +251,17 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-bool read_number(std::string_view text, double& out) {
+// A double or an int64 that is the whole text, blanks around it and a leading '+' allowed.
+template <class T>
+bool read_scalar(std::string_view text, T& out) {
   text = trim(text);
   if (!text.empty() && text.front() == '+') text.remove_prefix(1);
   const char* end = text.data() + text.size();
   auto [ptr, ec] = std::from_chars(text.data(), end, out);
   return !text.empty() && ec == std::errc() && ptr == end;
 }
-
-bool read_integer(std::string_view text, std::int64_t& out) {
-  text = trim(text);
-  if (!text.empty() && text.front() == '+') text.remove_prefix(1);
-  const char* end = text.data() + text.size();
-  auto [ptr, ec] = std::from_chars(text.data(), end, out);
-  return !text.empty() && ec == std::errc() && ptr == end;
-}
+bool read_number(std::string_view text, double& out) { return read_scalar(text, out); }
+bool read_integer(std::string_view text, std::int64_t& out) { return read_scalar(text, out); }
 
 std::vector<std::string_view> split(std::string_view text, char sep) {
   std::vector<std::string_view> parts;
@@ -304,63 +312,29 @@ bool is_utf8(std::string_view s) {
 
 bool whole(double d) { return std::isfinite(d) && d == std::floor(d) && std::abs(d) <= 0x1.0p53; }
 
-// The list element types and the single-value type each list holds.
-ParamType element_type(ParamType t) {
-  switch (t) {
-    case ParamType::vertices:
-      return ParamType::vertex;
-    case ParamType::edges:
-      return ParamType::edge;
-    case ParamType::faces:
-      return ParamType::face;
-    case ParamType::corners:
-      return ParamType::corner;
-    case ParamType::numbers:
-      return ParamType::number;
-    case ParamType::points:
-      return ParamType::point;
-    default:
-      return t;
+// x,y,z, the whole text.
+bool read_point(std::string_view text, glm::dvec3& out) {
+  const auto parts = split(text, ',');
+  if (parts.size() != 3) return false;
+  for (int i = 0; i < 3; ++i) {
+    if (!read_number(parts[i], out[i])) return false;
   }
+  return true;
 }
 
-bool is_single_handle(ParamType t) {
-  return t == ParamType::vertex || t == ParamType::edge || t == ParamType::face || t == ParamType::corner;
+// The items of a `separator`-separated list, each read by `read`; nothing if one does not read.
+template <class T, class Read>
+std::optional<Value> read_list(std::string_view text, char separator, Read read) {
+  std::vector<T> out;
+  for (auto part : split(text, separator)) {
+    T item{};
+    if (!read(part, item)) return std::nullopt;
+    out.push_back(item);
+  }
+  return Value(std::move(out));
 }
 
-std::string expected(ParamType t) {
-  switch (t) {
-    case ParamType::boolean:
-      return "true or false";
-    case ParamType::integer:
-      return "a whole number";
-    case ParamType::number:
-      return "a number";
-    case ParamType::text:
-      return "text";
-    case ParamType::point:
-      return "a point x,y,z";
-    case ParamType::vertex:
-    case ParamType::edge:
-    case ParamType::face:
-    case ParamType::corner:
-      return std::string("a ") + std::string(to_string(t)) + " handle (its number)";
-    case ParamType::vertices:
-    case ParamType::edges:
-    case ParamType::faces:
-    case ParamType::corners:
-      return std::string("a list of ") + std::string(to_string(element_type(t))) + " handles a,b,c";
-    case ParamType::numbers:
-      return "a list of numbers a,b,c";
-    case ParamType::points:
-      return "a list of points x,y,z;x,y,z";
-    case ParamType::mesh:
-      return "a mesh";
-    case ParamType::params:
-      return "a parameter set";
-  }
-  return "?";
-}
+std::string expected(ParamType t) { return detail::name_at(t, expected_values, "?"); }
 
 std::string shown(const Value& v) {
   const std::string t = v.to_text();
@@ -418,15 +392,8 @@ std::optional<Value> convert(ParamType type, const Value& v) {
         const auto& n = v.as_integers();
         return Value(glm::dvec3(double(n[0]), double(n[1]), double(n[2])));
       }
-      if (text) {
-        const auto parts = split(v.as_text(), ',');
-        glm::dvec3 p(0.0);
-        if (parts.size() != 3) return std::nullopt;
-        for (int i = 0; i < 3; ++i) {
-          if (!read_number(parts[i], p[i])) return std::nullopt;
-        }
-        return Value(p);
-      }
+      glm::dvec3 p(0.0);
+      if (text && read_point(v.as_text(), p)) return Value(p);
       return std::nullopt;
     }
     case ParamType::vertices:
@@ -443,14 +410,7 @@ std::optional<Value> convert(ParamType type, const Value& v) {
         }
         return Value(std::move(out));
       }
-      if (text) {
-        for (auto part : split(v.as_text(), ',')) {
-          std::int64_t i = 0;
-          if (!read_integer(part, i)) return std::nullopt;
-          out.push_back(i);
-        }
-        return Value(std::move(out));
-      }
+      if (text) return read_list<std::int64_t>(v.as_text(), ',', read_integer);
       return std::nullopt;
     }
     case ParamType::numbers: {
@@ -461,28 +421,13 @@ std::optional<Value> convert(ParamType type, const Value& v) {
         return Value(std::move(out));
       }
       if (k == K::number || k == K::integer) return Value(std::vector<double>{v.as_number()});
-      if (text) {
-        for (auto part : split(v.as_text(), ',')) {
-          double d = 0;
-          if (!read_number(part, d)) return std::nullopt;
-          out.push_back(d);
-        }
-        return Value(std::move(out));
-      }
+      if (text) return read_list<double>(v.as_text(), ',', read_number);
       return std::nullopt;
     }
     case ParamType::points: {
       if (k == K::points) return v;
       if (k == K::point) return Value(std::vector<glm::dvec3>{v.as_point()});
-      if (text) {
-        std::vector<glm::dvec3> out;
-        for (auto part : split(v.as_text(), ';')) {
-          auto p = convert(ParamType::point, Value(std::string(part)));
-          if (!p) return std::nullopt;
-          out.push_back(p->as_point());
-        }
-        return Value(std::move(out));
-      }
+      if (text) return read_list<glm::dvec3>(v.as_text(), ';', read_point);
       return std::nullopt;
     }
     case ParamType::mesh:

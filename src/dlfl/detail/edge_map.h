@@ -4,10 +4,11 @@
 // whatever the valence, and probes touch one or two cache lines near the vertex's neighbours, which is what
 // makes building a million-face DLFL fast. Internal to the library.
 
-#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
+
+#include <dlfl/detail/bucket_regions.h>
 
 namespace dlfl::detail {
 
@@ -17,14 +18,7 @@ class EdgeMap {
 
   /// `out_degree[a]` bounds the number of keys (a, *) that will be inserted.
   explicit EdgeMap(std::span<const std::uint32_t> out_degree) : start_(out_degree.size() + 1) {
-    std::size_t total = 0;
-    for (std::size_t a = 0; a < out_degree.size(); ++a) {
-      start_[a] = total;
-      // Load factor at most one half; a power of two so the probe can wrap with a mask.
-      total += out_degree[a] == 0 ? 0 : std::bit_ceil(2 * std::size_t(out_degree[a]));
-    }
-    start_.back() = total;
-    slots_.assign(total, Slot{none, none});
+    slots_.assign(lay_out_regions(out_degree, start_), Slot{none, none});
   }
 
   /// Inserts (a,b) -> value unless (a,b) is present; returns the value stored for (a,b) afterwards.
@@ -57,13 +51,6 @@ class EdgeMap {
     std::uint32_t target;
     std::uint32_t value;
   };
-  // Fibonacci hashing: the top log2(region size) bits of the product, the best-mixed ones, whatever the size
-  // of the region (a vertex of degree 2^24 and more gets a region that a fixed shift would not cover).
-  static std::size_t first_slot(std::uint32_t b, std::size_t mask) {
-    const std::uint64_t h = std::uint64_t(b) * 0x9E3779B97F4A7C15ull;
-    return mask == 0 ? 0 : static_cast<std::size_t>(h >> std::countl_zero(std::uint64_t(mask)));
-  }
-
   std::vector<std::size_t> start_;
   std::vector<Slot> slots_;
 };

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cerrno>
 #include <fstream>
+#include <istream>
 #include <system_error>
 
 #include <dlfl/build_mesh.h>
@@ -40,6 +41,18 @@ Mesh build_mesh(const ParsedPolygons& parsed, const std::string& name) {
     // Only a soup too large for 32-bit handles gets here, as the parsers check everything else.
     throw IoError(e.what(), name);
   }
+}
+
+// The polygon readers take a stream alike: all of it into memory, then the parser proper on the text, as
+// read_mesh does with a file.
+ParsedPolygons parse_obj(std::istream& in, const std::string& name) {
+  return io_detail::parse_obj_text(io_detail::read_all(in, name), name);
+}
+ParsedPolygons parse_off(std::istream& in, const std::string& name) {
+  return io_detail::parse_off_text(io_detail::read_all(in, name), name);
+}
+ParsedPolygons parse_ply(std::istream& in, const std::string& name) {
+  return io_detail::parse_ply_text(io_detail::read_all(in, name), name);
 }
 
 namespace {

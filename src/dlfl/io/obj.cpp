@@ -1,7 +1,5 @@
 // Wavefront OBJ: `v` and `f` statements; everything else is skipped.
 
-#include <istream>
-
 #include <dlfl/io/detail/text_io.h>
 #include <dlfl/io/obj.h>
 
@@ -28,10 +26,9 @@ ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
         soup.indices.push_back(obj_vertex_index(s, defined));
         ++count;
       }
-      if (count < 3) s.fail("face has " + std::to_string(count) + " vertices; at least 3 are needed");
+      if (count < 3) s.fail(face_size_error(std::int64_t(count)));
       if (soup.indices.size() > max_indices) s.fail("too many face vertices");
-      soup.offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
-      parsed.face_lines.push_back(s.line());
+      end_face(parsed, s.line());
     }
   }
   check_obj_indices(
@@ -41,10 +38,6 @@ ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
 }
 
 }  // namespace io_detail
-
-ParsedPolygons parse_obj(std::istream& in, const std::string& name) {
-  return io_detail::parse_obj_text(io_detail::read_all(in, name), name);
-}
 
 void write_obj(std::ostream& out, const PolygonSoup& soup) {
   io_detail::BlockWriter w(out);

@@ -1,7 +1,5 @@
 // Geomview OFF, ASCII: a header keyword, the counts, one vertex per line, one face per line.
 
-#include <istream>
-
 #include <dlfl/io/detail/text_io.h>
 #include <dlfl/io/off.h>
 
@@ -69,28 +67,20 @@ ParsedPolygons parse_off_text(std::string_view text, const std::string& name) {
       s.fail("file ends after " + std::to_string(f) + " of " + std::to_string(faces) + " faces");
     }
     const std::int64_t n = s.integer("face size");
-    if (n < 3) s.fail("face has " + std::to_string(n) + " vertices; at least 3 are needed");
+    if (n < 3) s.fail(face_size_error(n));
     // Colour values after the indices are ignored.
     for (std::int64_t j = 0; j < n; ++j) {
       const std::int64_t i = s.integer("vertex index");
-      if (i < 0 || i >= nv) {
-        s.fail("vertex index " + std::to_string(i) + " is out of range (there are " + std::to_string(nv) +
-               " vertices)");
-      }
+      if (i < 0 || i >= nv) s.fail(index_error(i, vertices));
       soup.indices.push_back(static_cast<std::uint32_t>(i));
     }
     if (soup.indices.size() > max_indices) s.fail("too many face vertices");
-    soup.offsets.push_back(static_cast<std::uint32_t>(soup.indices.size()));
-    parsed.face_lines.push_back(s.line());
+    end_face(parsed, s.line());
   }
   return parsed;
 }
 
 }  // namespace io_detail
-
-ParsedPolygons parse_off(std::istream& in, const std::string& name) {
-  return io_detail::parse_off_text(io_detail::read_all(in, name), name);
-}
 
 void write_off(std::ostream& out, const PolygonSoup& soup) {
   io_detail::BlockWriter w(out);

@@ -1,7 +1,9 @@
 // Stanford PLY, ASCII and binary little-endian: vertex x/y/z and the face index lists; everything else
 // skipped.
 
-#include <istream>
+#include <array>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include <dlfl/io/detail/text_io.h>
@@ -34,22 +36,20 @@ bool parse_scalar(std::string_view s, Scalar& type) {
   return false;
 }
 
+// The C++ type of each Scalar, in the enumeration's order: the sizes and the loads below are read from it,
+// instead of a switch over the eight types each.
+using ScalarTypes = std::tuple<std::int8_t, std::uint8_t, std::int16_t, std::uint16_t, std::int32_t,
+                               std::uint32_t, float, double>;
+using ScalarIndices = std::make_index_sequence<std::tuple_size_v<ScalarTypes>>;
+
+template <std::size_t... I>
+constexpr std::array<std::size_t, sizeof...(I)> scalar_sizes(std::index_sequence<I...>) {
+  return {sizeof(std::tuple_element_t<I, ScalarTypes>)...};
+}
+
 std::size_t size_of(Scalar t) {
-  switch (t) {
-    case Scalar::i8:
-    case Scalar::u8:
-      return 1;
-    case Scalar::i16:
-    case Scalar::u16:
-      return 2;
-    case Scalar::i32:
-    case Scalar::u32:
-    case Scalar::f32:
-      return 4;
-    case Scalar::f64:
-      return 8;
-  }
-  return 0;
+  static constexpr auto sizes = scalar_sizes(ScalarIndices());
+  return std::size_t(t) < sizes.size() ? sizes[std::size_t(t)] : 0;
 }
 
 bool is_integer(Scalar t) { return t != Scalar::f32 && t != Scalar::f64; }
@@ -62,31 +62,20 @@ T load(const unsigned char* p) {
 }
 
 // A scalar of any PLY type, converted to R (int64 is exact for every integer type PLY has).
-template <class R>
-R load_as(Scalar t, const unsigned char* p) {
-  switch (t) {
-    case Scalar::i8:
-      return static_cast<R>(load<std::int8_t>(p));
-    case Scalar::u8:
-      return static_cast<R>(load<std::uint8_t>(p));
-    case Scalar::i16:
-      return static_cast<R>(load<std::int16_t>(p));
-    case Scalar::u16:
-      return static_cast<R>(load<std::uint16_t>(p));
-    case Scalar::i32:
-      return static_cast<R>(load<std::int32_t>(p));
-    case Scalar::u32:
-      return static_cast<R>(load<std::uint32_t>(p));
-    case Scalar::f32:
-      return static_cast<R>(load<float>(p));
-    case Scalar::f64:
-      return static_cast<R>(load<double>(p));
-  }
-  return 0;
+template <class R, std::size_t... I>
+R load_as(Scalar t, const unsigned char* p, std::index_sequence<I...>) {
+  R value = 0;
+  // The one I that is t loads; || stops there.
+  (void)((std::size_t(t) == I &&
+          (value = static_cast<R>(load<std::tuple_element_t<I, ScalarTypes>>(p)), true)) ||
+         ...);
+  return value;
 }
-double load_real(Scalar t, const unsigned char* p) { return load_as<double>(t, p); }
+double load_real(Scalar t, const unsigned char* p) { return load_as<double>(t, p, ScalarIndices()); }
 // Only called for integer types (checked in the header).
-std::int64_t load_integer(Scalar t, const unsigned char* p) { return load_as<std::int64_t>(t, p); }
+std::int64_t load_integer(Scalar t, const unsigned char* p) {
+  return load_as<std::int64_t>(t, p, ScalarIndices());
+}
 
 // What a property means to the reader.
 enum class Role : std::uint8_t { skip, x, y, z, indices };
@@ -209,15 +198,6 @@ Header parse_header(LineScanner& s, const std::string& name) {
 
 std::string element_at(const Element& e, std::size_t i) { return e.name + " " + std::to_string(i); }
 
-std::string face_size_error(std::int64_t n) {
-  return "face has " + std::to_string(n) + " vertices; at least 3 are needed";
-}
-
-std::string index_error(std::int64_t i, std::size_t nv) {
-  return "vertex index " + std::to_string(i) + " is out of range (there are " + std::to_string(nv) +
-         " vertices)";
-}
-
 void reserve(ParsedPolygons& parsed, const Header& h, std::size_t bytes_left) {
   // No more than the data can hold, so that a garbled count cannot exhaust memory.
   const std::size_t nv = std::min(h.num_vertices, bytes_left / 3), nf = std::min(h.num_faces, bytes_left / 4);
@@ -249,11 +229,6 @@ void check_counts(const Header& h, std::size_t bytes_left, const std::string& na
     }
     needed += e.count * per_element;
   }
-}
-
-void end_face(ParsedPolygons& parsed, std::size_t line) {
-  parsed.soup.offsets.push_back(static_cast<std::uint32_t>(parsed.soup.indices.size()));
-  parsed.face_lines.push_back(line);
 }
 
 void read_ascii(LineScanner& s, const Header& h, ParsedPolygons& parsed) {
@@ -398,10 +373,6 @@ ParsedPolygons parse_ply_text(std::string_view text, const std::string& name) {
 }
 
 }  // namespace io_detail
-
-ParsedPolygons parse_ply(std::istream& in, const std::string& name) {
-  return io_detail::parse_ply_text(io_detail::read_all(in, name), name);
-}
 
 void write_ply(std::ostream& out, const PolygonSoup& soup, bool binary) {
   std::size_t largest = 0;

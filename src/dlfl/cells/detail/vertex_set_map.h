@@ -6,11 +6,11 @@
 // valence, and cells that are close in the input probe memory that is close. Internal to the library.
 
 #include <array>
-#include <bit>
 #include <cstdint>
 #include <span>
 #include <vector>
 
+#include <dlfl/detail/bucket_regions.h>
 #include <dlfl/detail/large_allocator.h>
 
 namespace dlfl::detail {
@@ -25,14 +25,7 @@ class VertexSetMap {
 
   /// `starts_with[a]` bounds the number of insertions of keys whose smallest vertex is a.
   explicit VertexSetMap(std::span<const std::uint32_t> starts_with) : start_(starts_with.size() + 1) {
-    std::size_t total = 0;
-    for (std::size_t a = 0; a < starts_with.size(); ++a) {
-      start_[a] = total;
-      // Load factor at most one half even if every insertion is a new key; a power of two to wrap with a
-      // mask.
-      total += starts_with[a] == 0 ? 0 : std::bit_ceil(2 * std::size_t(starts_with[a]));
-    }
-    start_.back() = total;
+    const std::size_t total = lay_out_regions(starts_with, {start_.data(), start_.size()});
     Slot empty{};
     empty.rest.fill(none);
     empty.value = none;
@@ -66,12 +59,11 @@ class VertexSetMap {
     }
     return true;
   }
-  // Fibonacci hashing: the top log2(region size) bits of the product, the best-mixed ones, whatever the size
-  // of the region (one vertex may start tens of millions of keys; a fixed shift would not cover its region).
+  // The rest of the key hashed as (((k1 C + k2) C + k3) C ...) C, the last multiplication first_slot's.
   static std::size_t first_slot(const Key& key, std::size_t mask) {
-    std::uint64_t h = 0;
-    for (std::size_t j = 1; j < K; ++j) h = (h + key[j]) * 0x9E3779B97F4A7C15ull;
-    return mask == 0 ? 0 : static_cast<std::size_t>(h >> std::countl_zero(std::uint64_t(mask)));
+    std::uint64_t h = key[1];
+    for (std::size_t j = 2; j < K; ++j) h = h * 0x9E3779B97F4A7C15ull + key[j];
+    return detail::first_slot(h, mask);
   }
 
   LargeVector<std::size_t> start_;  // huge pages, and blocks reused from the previous step

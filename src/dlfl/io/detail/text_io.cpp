@@ -68,4 +68,13 @@ void BlockWriter::flush() {
   size_ = 0;
 }
 
+std::string face_size_error(std::int64_t n) {
+  return "face has " + std::to_string(n) + " vertices; at least 3 are needed";
+}
+
+std::string index_error(std::int64_t i, std::size_t num_vertices) {
+  return "vertex index " + std::to_string(i) + " is out of range (there are " + std::to_string(num_vertices) +
+         " vertices)";
+}
+
 }  // namespace dlfl::io_detail

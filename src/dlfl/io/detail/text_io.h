@@ -35,8 +35,8 @@ std::string read_file(const std::filesystem::path& path);
 /// The file's extension in lower case, with its dot (".obj"); empty if it has none.
 std::string lower_extension(const std::filesystem::path& path);
 
-/// The parsers proper, on a whole file in memory. The istream overloads in mesh_io.h read the stream and call
-/// these.
+/// The parsers proper, on a whole file in memory. The istream overloads (parse_obj of obj.h and so on,
+/// defined in mesh_io.cpp) read the stream and call these.
 ParsedPolygons parse_obj_text(std::string_view text, const std::string& name);
 ParsedPolygons parse_off_text(std::string_view text, const std::string& name);
 ParsedPolygons parse_ply_text(std::string_view text, const std::string& name);
@@ -45,6 +45,18 @@ inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c ==
 
 /// Largest index count a soup can hold: its offsets are 32-bit.
 constexpr std::size_t max_indices = 0xFFFFFFFEu;
+
+/// The polygon readers' messages for a face of `n` < 3 vertices, and for a vertex index `i` not below the
+/// `num_vertices` the file declares.
+std::string face_size_error(std::int64_t n);
+std::string index_error(std::int64_t i, std::size_t num_vertices);
+
+/// Closes the face whose indices were just appended to `parsed.soup`, read at line `line` (0 for a binary
+/// file). The caller has checked the index count against `max_indices`.
+inline void end_face(ParsedPolygons& parsed, std::size_t line) {
+  parsed.soup.offsets.push_back(static_cast<std::uint32_t>(parsed.soup.indices.size()));
+  parsed.face_lines.push_back(line);
+}
 
 /// Walks a text buffer line by line and reads blank-separated tokens and numbers within the current line.
 /// Errors are IoErrors at the current line; after `next_line()` returned false that is the last line of the
