@@ -14,13 +14,18 @@ Action add_replay(CLI::App& app) {
   auto log = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto ascii = std::make_shared<bool>(false);
+  auto no_verify = std::make_shared<bool>(false);
   cmd->add_option("LOG", *log, "Operation log (.json)")->required();
   cmd->add_option("-o,--output", *out, "Output mesh (format by extension; .json keeps every handle)")
       ->required();
   cmd->add_flag("--ascii", *ascii, "Write PLY as ASCII instead of binary little-endian");
-  return [log, out, ascii] {
+  cmd->add_flag("--no-verify", *no_verify,
+                "Do not check the hashes the log carries (of each input read again, and of the final mesh)");
+  return [log, out, ascii, no_verify] {
     check_files({{"LOG", *log}}, {{"-o", *out}});
-    const Editor editor = replay_log_file(*log);  // nothing is written unless the whole log replays
+    ReplayOptions options;
+    options.verify = !*no_verify;
+    const Editor editor = replay_log_file(*log, options);  // nothing is written unless the whole log replays
     WriteOptions write;
     write.binary_ply = !*ascii;
     write_mesh(editor.mesh(), *out, write);

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <dlfl/errors.h>
+#include <dlfl/mesh_hash.h>
 #include <dlfl/operations/operation.h>
 
 namespace dlfl {
@@ -89,6 +90,7 @@ void Editor::set_mesh(Mesh mesh, const std::optional<std::filesystem::path>& sou
   if (source) {
     params["path"] = std::filesystem::absolute(*source).lexically_normal().string();
     if (options_.embed_meshes) params["mesh"] = std::make_shared<const Mesh>(mesh);
+    params["hash"] = mesh_hash(mesh);  // a replay that reads the file again checks it is the same mesh
     log_.push_back({"load", std::move(params)});
   } else {
     params["mesh"] = std::make_shared<const Mesh>(mesh);

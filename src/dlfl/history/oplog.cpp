@@ -5,6 +5,7 @@
 #include <dlfl/io/atomic_file.h>
 #include <dlfl/io/detail/text_io.h>
 #include <dlfl/io/json_mesh.h>
+#include <dlfl/mesh_hash.h>
 #include <dlfl/operations/operation.h>
 
 namespace dlfl {
@@ -108,7 +109,8 @@ class FieldReader {
   std::size_t op_;
 };
 
-void replay_op(Editor& editor, const json& op, std::size_t index, const std::string& name) {
+void replay_op(Editor& editor, const json& op, std::size_t index, const std::string& name,
+               const ReplayOptions& options) {
   const FieldReader reader(name, index);
   if (!op.is_object()) reader.fail("op", "expected an object");
   auto kind = op.find("op");
@@ -123,6 +125,7 @@ void replay_op(Editor& editor, const json& op, std::size_t index, const std::str
   Params given;
   for (const auto& [field, value] : op.items()) {
     if (field == "op") continue;
+    if (field == "hash" && !options.verify) continue;
     const ParamSpec* declared = nullptr;
     for (const auto& p : spec->params) declared = p.name == field ? &p : declared;
     if (!declared) {
@@ -160,7 +163,8 @@ std::string log_text(const Editor& editor) {
   const json doc = {{"format", "dlfl-oplog"},
                     {"version", oplog_version},
                     {"undo_limit", editor.options().undo_limit},
-                    {"ops", std::move(ops)}};
+                    {"ops", std::move(ops)},
+                    {"final_hash", mesh_hash(editor.mesh())}};
   try {
     return doc.dump(1);
   } catch (const json::type_error&) {
@@ -189,7 +193,7 @@ void write_log(const Editor& editor, const std::filesystem::path& path, FileBatc
   }
 }
 
-Editor replay_log(std::string_view text, const std::string& name) {
+Editor replay_log(std::string_view text, const std::string& name, const ReplayOptions& replay) {
   const json log = json::parse(text, nullptr, false);
   if (log.is_discarded()) throw LogError(name, LogError::npos, "(document)", "not valid JSON");
   if (!log.is_object()) throw LogError(name, LogError::npos, "(document)", "expected a JSON object");
@@ -217,14 +221,23 @@ Editor replay_log(std::string_view text, const std::string& name) {
   if (ops == log.end() || !ops->is_array()) {
     throw LogError(name, LogError::npos, "ops", "missing or not an array");
   }
+  auto final_hash = log.find("final_hash");
+  if (final_hash != log.end() && !final_hash->is_string()) {
+    throw LogError(name, LogError::npos, "final_hash", "expected a string");
+  }
   Editor editor(options);
-  for (std::size_t i = 0; i < ops->size(); ++i) replay_op(editor, (*ops)[i], i, name);
+  for (std::size_t i = 0; i < ops->size(); ++i) replay_op(editor, (*ops)[i], i, name, replay);
+  if (replay.verify && final_hash != log.end() && *final_hash != mesh_hash(editor.mesh())) {
+    throw LogError(name, LogError::npos, "final_hash",
+                   "the replay ends in a mesh of hash " + mesh_hash(editor.mesh()) + ", the log expects " +
+                       final_hash->get<std::string>() + " (the log was edited, or an input changed unseen)");
+  }
   return editor;
 }
 
-Editor replay_log_file(const std::filesystem::path& path) {
+Editor replay_log_file(const std::filesystem::path& path, const ReplayOptions& options) {
   const std::string text = io_detail::read_file(path);
-  return replay_log(text, path.string());
+  return replay_log(text, path.string(), options);
 }
 
 }  // namespace dlfl

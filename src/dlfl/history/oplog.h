@@ -32,20 +32,30 @@ class LogError : public IoError {
   std::string field_;
 };
 
-/// The editor's session as log text (JSON, one op per entry).
+/// The editor's session as log text (JSON, one op per entry), with the hash of its final mesh
+/// ("final_hash").
 std::string log_text(const Editor& editor);
 
 /// Writes `log_text(editor)` to a file atomically; with a `batch`, only stages it there (io/atomic_file.h),
 /// to be replaced when the batch commits, together with its other files.
 void write_log(const Editor& editor, const std::filesystem::path& path, FileBatch* batch = nullptr);
 
+struct ReplayOptions {
+  /// Check the hashes the log carries: of each loaded mesh (a `load` op's "hash": the file read again must
+  /// hold the same mesh) and of the final mesh ("final_hash"). Off, they are ignored, and the replay uses the
+  /// input files as they are now.
+  bool verify = true;
+};
+
 /// Replays log text in a fresh editor (with the log's undo limit) and returns it; `name` is used in
 /// messages. Every op's parameters are checked against its declaration before it runs. Throws LogError for
 /// bad JSON, a bad version or format, an unknown op, an unknown, missing, mistyped or out-of-range field, a
-/// handle that does not exist at that point, or an op that fails.
-Editor replay_log(std::string_view text, const std::string& name = "log");
+/// handle that does not exist at that point, or an op that fails; and, when verifying, for a loaded mesh
+/// that has changed since the log was written (that op, field "hash") or a final mesh of another hash (field
+/// "final_hash").
+Editor replay_log(std::string_view text, const std::string& name = "log", const ReplayOptions& options = {});
 
 /// Reads a log file and replays it. Throws IoError if the file cannot be read, else as above.
-Editor replay_log_file(const std::filesystem::path& path);
+Editor replay_log_file(const std::filesystem::path& path, const ReplayOptions& options = {});
 
 }  // namespace dlfl

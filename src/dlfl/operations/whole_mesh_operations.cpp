@@ -3,6 +3,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/io/mesh_io.h>
+#include <dlfl/mesh_hash.h>
 #include <dlfl/operations/detail/operation_table.h>
 #include <dlfl/schemes/scheme_registry.h>
 
@@ -14,10 +15,20 @@ std::vector<OperationSpec> whole_mesh_operation_specs() {
   ops.push_back(replace_operation(
       "load", "makes a mesh read from a file the current mesh",
       {param("path", ParamType::text, "the file it was read from"),
-       param("mesh", ParamType::mesh, "the mesh itself (self-contained logs)").optional("read from path")},
+       param("mesh", ParamType::mesh, "the mesh itself (self-contained logs)").optional("read from path"),
+       param("hash", ParamType::text, "the mesh's mesh_hash when it was loaded; a different mesh is refused")
+           .optional("not checked")},
       [](const Mesh&, const Params& p) {
-        if (p.has("mesh")) return p.get("mesh").as_mesh();
-        return read_mesh(p.text("path"));
+        Mesh m = p.has("mesh") ? p.get("mesh").as_mesh() : read_mesh(p.text("path"));
+        // A log that reads its input again must get the mesh it was written with.
+        if (p.has("hash") && mesh_hash(m) != p.text("hash")) {
+          throw ParameterError("the mesh of " + p.text("path") +
+                                   " has changed since the log was written (hash " + mesh_hash(m) +
+                                   ", the log expects " + p.text("hash") +
+                                   "); replay with --no-verify to use it as it is now",
+                               "hash");
+        }
+        return m;
       }));
 
   ops.push_back(replace_operation("mesh", "makes the given mesh the current mesh",
