@@ -148,6 +148,24 @@ TEST_CASE("read_mesh: an empty file, a file without geometry and a binary file a
   CHECK(read_mesh(dir / "utf8.obj").num_vertices() == 3);
 }
 
+TEST_CASE("read_mesh: messages number faces from 1 and vertices as the file does, with the handle beside") {
+  ScratchDir dir;
+  // The second f line (line 6) runs 1 -> 2 as the first does: the OBJ's vertices 1 and 2, its face 2.
+  write_text(dir / "twice.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 2 4\n");
+  CHECK_THROWS_WITH_AS(
+      read_mesh(dir / "twice.obj"),
+      doctest::Contains("twice.obj:6: face 2 (f1): edge 1-2 is also used in the same direction "
+                        "by face 1"),
+      IoError);
+  // OFF indices start at 0, so its vertices keep their numbers; faces still count from 1.
+  write_text(dir / "twice.off", "OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n");
+  CHECK_THROWS_WITH_AS(read_mesh(dir / "twice.off"),
+                       doctest::Contains("twice.off:8: face 2 (f1): edge 0-1 is also used"), IoError);
+  write_text(dir / "repeat.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 3 3 1\n");
+  CHECK_THROWS_WITH_AS(read_mesh(dir / "repeat.obj"),
+                       doctest::Contains("repeat.obj:5: face 2 (f1): uses vertex 3 twice in a row"), IoError);
+}
+
 TEST_CASE("write_mesh: an empty mesh makes no file") {
   ScratchDir dir;
   CHECK_THROWS_WITH_AS(write_mesh(Mesh(), dir / "e.obj"), doctest::Contains("no vertices"), IoError);

@@ -11,22 +11,35 @@ namespace dlfl {
 // Writes the mesh arrays directly: building through insert_edge would relabel faces on every merge.
 class MeshBuilder {
  public:
-  static Mesh build(const PolygonSoup& soup);
+  static Mesh build(const PolygonSoup& soup, const SoupNumbering& numbering);
   static PolygonSoup polygons(const Mesh& mesh);
 };
 
 namespace {
 constexpr std::uint32_t none = 0xFFFFFFFFu;
 
-[[noreturn]] void fail_face(std::size_t face, const std::string& what) {
-  throw PolygonError(PolygonError::Element::face, face, "face " + std::to_string(face) + ": " + what);
-}
-[[noreturn]] void fail_vertex(std::size_t vertex, const std::string& what) {
-  throw PolygonError(PolygonError::Element::vertex, vertex, "vertex " + std::to_string(vertex) + ": " + what);
-}
+// Messages number vertices and faces as the soup's file does; the handle follows where the two differ.
+struct Complaint {
+  const SoupNumbering& numbering;
+
+  std::string vertex(std::uint32_t k) const {
+    return std::to_string(std::uint64_t{k} + numbering.first_vertex);
+  }
+  [[noreturn]] void face(std::size_t f, const std::string& what) const {
+    std::string name = "face " + std::to_string(f + numbering.first_face);
+    if (numbering.first_face != 0) name += " (f" + std::to_string(f) + ")";
+    throw PolygonError(PolygonError::Element::face, f, name + ": " + what);
+  }
+  [[noreturn]] void vertex_fails(std::size_t v, const std::string& what) const {
+    std::string name = "vertex " + std::to_string(v + numbering.first_vertex);
+    if (numbering.first_vertex != 0) name += " (v" + std::to_string(v) + ")";
+    throw PolygonError(PolygonError::Element::vertex, v, name + ": " + what);
+  }
+};
 }  // namespace
 
-Mesh MeshBuilder::build(const PolygonSoup& soup) {
+Mesh MeshBuilder::build(const PolygonSoup& soup, const SoupNumbering& numbering) {
+  const Complaint fail{numbering};
   const std::size_t nv = soup.positions.size();
   const std::size_t nf = soup.num_faces();
   const std::size_t nc = soup.indices.size();
@@ -37,19 +50,19 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
   for (std::size_t i = 0; i < nv; ++i) {
     const auto& p = soup.positions[i];
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-      fail_vertex(i, "coordinate is not finite");
+      fail.vertex_fails(i, "coordinate is not finite");
   }
   for (std::size_t f = 0; f < nf; ++f) {
     auto face = soup.face(f);
     if (face.size() < 3)
-      fail_face(f, "has " + std::to_string(face.size()) + " vertices; at least 3 are needed");
+      fail.face(f, "has " + std::to_string(face.size()) + " vertices; at least 3 are needed");
     std::uint32_t previous = face.back();
     for (std::uint32_t k : face) {
       if (k >= nv) {
-        fail_face(f, "vertex index " + std::to_string(k) + " is out of range (there are " +
-                         std::to_string(nv) + " vertices)");
+        fail.face(f, "vertex index " + fail.vertex(k) + " is out of range (there are " + std::to_string(nv) +
+                         " vertices)");
       }
-      if (k == previous) fail_face(f, "uses vertex " + std::to_string(k) + " twice in a row");
+      if (k == previous) fail.face(f, "uses vertex " + fail.vertex(k) + " twice in a row");
       previous = k;
     }
   }
@@ -80,10 +93,10 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
     const std::uint32_t a = m.corners_[k].vertex.index(), b = target(k);
     const std::uint32_t first = directed.insert(a, b, k);
     if (first != k) {
-      fail_face(m.corners_[k].face.index(),
-                "edge " + std::to_string(a) + "-" + std::to_string(b) +
+      fail.face(m.corners_[k].face.index(),
+                "edge " + fail.vertex(a) + "-" + fail.vertex(b) +
                     " is also used in the same direction by face " +
-                    std::to_string(m.corners_[first].face.index()) +
+                    std::to_string(std::uint64_t{m.corners_[first].face.index()} + numbering.first_face) +
                     " (an edge of more than two faces, or faces with opposite orientation)");
     }
   }
@@ -111,7 +124,7 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
     for (std::uint32_t s = 0; s < boundary.size(); ++s) {
       const std::uint32_t b = target(boundary[s]);
       if (arriving[b] != none)
-        fail_vertex(b, "non-manifold: it lies on the boundary of more than one fan of faces");
+        fail.vertex_fails(b, "non-manifold: it lies on the boundary of more than one fan of faces");
       arriving[b] = s;
     }
     const std::uint32_t hole_base = static_cast<std::uint32_t>(nc);
@@ -181,7 +194,7 @@ Mesh MeshBuilder::build(const PolygonSoup& soup) {
       ++count;
     } while (c != first && count <= corners_at[v]);
     if (count != corners_at[v]) {
-      fail_vertex(v, "non-manifold: its faces form more than one fan around it");
+      fail.vertex_fails(v, "non-manifold: its faces form more than one fan around it");
     }
   }
   return m;
@@ -232,7 +245,9 @@ PolygonSoup MeshBuilder::polygons(const Mesh& m) {
   return soup;
 }
 
-Mesh build_mesh(const PolygonSoup& soup) { return MeshBuilder::build(soup); }
+Mesh build_mesh(const PolygonSoup& soup, const SoupNumbering& numbering) {
+  return MeshBuilder::build(soup, numbering);
+}
 PolygonSoup to_polygons(const Mesh& mesh) { return MeshBuilder::polygons(mesh); }
 
 }  // namespace dlfl

@@ -2,6 +2,7 @@
 // Polygon soup -> DLFL, in O(size).
 
 #include <cstddef>
+#include <cstdint>
 
 #include <dlfl/errors.h>
 #include <dlfl/mesh.h>
@@ -25,6 +26,14 @@ class PolygonError : public TopologyError {
   std::size_t index_;
 };
 
+/// How the messages of build_mesh number the soup's vertices and faces: as the file it came from does. By
+/// default they are the soup's indices (which are the handles); with another first number, the handle
+/// follows in parentheses ("face 3 (f2)").
+struct SoupNumbering {
+  std::uint32_t first_vertex = 0;  ///< the number of vertex 0: 1 for OBJ, whose indices start at 1
+  std::uint32_t first_face = 0;    ///< the number of face 0: 1 for files, "face 3" being the third face
+};
+
 /// Builds the DLFL of a polygon soup in O(size), pairing half-edges through a hash map of directed edges.
 ///
 /// Handles are predictable: vertex i of the soup is VertexId(i), face i is FaceId(i), and the corner of the
@@ -35,7 +44,7 @@ class PolygonError : public TopologyError {
 /// Throws PolygonError for: a non-finite position, a face with fewer than 3 vertices, an index out of range,
 /// a vertex used twice in a row, a directed edge used twice (an edge shared by more than two faces, or two
 /// faces with opposite orientation), and a non-manifold vertex (its faces form more than one fan).
-Mesh build_mesh(const PolygonSoup& soup);
+Mesh build_mesh(const PolygonSoup& soup, const SoupNumbering& numbering = {});
 
 /// The polygons of a mesh for writing: the open surface's vertices (see `statistics`: every live vertex but
 /// the inner vertices of a hole covered by several hole faces) in handle order, renumbered densely, and every

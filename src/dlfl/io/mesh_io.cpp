@@ -33,7 +33,7 @@ MeshFormat format_for_path(const std::filesystem::path& path) {
 
 Mesh build_mesh(const ParsedPolygons& parsed, const std::string& name) {
   try {
-    return dlfl::build_mesh(parsed.soup);
+    return dlfl::build_mesh(parsed.soup, parsed.numbering);
   } catch (const PolygonError& e) {
     const auto& lines = e.element() == PolygonError::Element::face ? parsed.face_lines : parsed.vertex_lines;
     throw IoError(e.what(), name, e.index() < lines.size() ? lines[e.index()] : 0);

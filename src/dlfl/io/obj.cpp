@@ -9,6 +9,7 @@ namespace io_detail {
 
 ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
   ParsedPolygons parsed;
+  parsed.numbering.first_vertex = 1;  // OBJ indices start at 1
   PolygonSoup& soup = parsed.soup;
   LineScanner s(text, name, true);
   while (s.next_line()) {

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/build_mesh.h>
 #include <dlfl/mesh.h>
 #include <dlfl/polygon_soup.h>
 
@@ -16,6 +17,9 @@ struct ParsedPolygons {
   PolygonSoup soup;
   std::vector<std::size_t> vertex_lines;
   std::vector<std::size_t> face_lines;
+  /// How the file numbers its vertices and faces, for messages: faces from 1, vertices as the file's
+  /// indices (from 1 in OBJ, from 0 in OFF and PLY).
+  SoupNumbering numbering{0, 1};
 };
 
 /// Builds the mesh from parsed polygons, turning a PolygonError into an IoError at the offending file line.
