@@ -1,6 +1,8 @@
 // dlfl subdivide IN -s SCHEME [-n ITER] [--param NAME=VALUE ...] -o OUT [--log LOG.json [--self-contained]]
 // A cell-complex file (.vtk, or .obj with points or curves) takes the cell-complex path: -s mlca only.
 
+#include <cstdio>
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -16,6 +18,46 @@
 namespace dlfl::tool {
 
 namespace {
+
+// The memory a mesh of these counts takes in the kernel's arrays: per vertex a position and a corner, per
+// corner (2 per edge) five handles, per edge two, per face a corner, a size and two flags.
+double mesh_bytes(const MeshCounts& c) {
+  return 28.0 * static_cast<double>(c.vertices) + (2 * 20.0 + 8.0) * static_cast<double>(c.edges) +
+         12.0 * static_cast<double>(c.faces);
+}
+
+// What the machine can still give: MemAvailable of /proc/meminfo; 0 where it is unknown.
+double available_bytes() {
+  std::ifstream meminfo("/proc/meminfo");
+  std::string key;
+  double kib = 0;
+  while (meminfo >> key >> kib) {
+    if (key == "MemAvailable:") return kib * 1024.0;
+    meminfo.ignore(256, '\n');
+  }
+  return 0;
+}
+
+// Refuses, before the first step, a run whose result cannot fit in memory: the editor keeps the input, the
+// last step reads the mesh before it while it builds the result, and writing it converts it once more, so
+// the peak is taken as the input plus three times the result.
+void check_memory(const Mesh& input, const std::string& scheme, const Params& params, int iterations) {
+  const Params resolved = resolve_scheme_params(scheme, params);
+  const auto predicted = predict_counts(scheme, resolved, counts_of(input), iterations);
+  const double available = available_bytes();
+  // Results beyond 32-bit handles are the subdivide operation's own refusal (a usage error, exit 2).
+  if (!predicted || available == 0 || 2 * predicted->edges >= CornerId::invalid_index) return;
+  const double needed = mesh_bytes(counts_of(input)) + 3 * mesh_bytes(*predicted);
+  if (needed <= available) return;
+  auto gib = [](double bytes) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", bytes / (1024.0 * 1024.0 * 1024.0));
+    return std::string(text);
+  };
+  throw Error(std::to_string(iterations) + " steps of " + scheme + " would make " +
+              std::to_string(predicted->faces) + " faces, needing about " + gib(needed) + " GiB where " +
+              gib(available) + " GiB are available; try fewer iterations");
+}
 
 // MLCA on a cell complex (curves, quads, hexahedra, mixed as creases). Operation logs and the editor hold
 // DLFL meshes, so they are refused here, before anything is read or written.
@@ -77,6 +119,7 @@ Action add_subdivide(CLI::App& app) {
       params[name] = std::move(value);
     }
     Editor editor = open_editor(a->in, a->self_contained);
+    check_memory(editor.mesh(), a->scheme, params, a->iterations);
     editor.subdivide(a->scheme, params, a->iterations);
     save_editor(editor, a->out, a->ascii, a->log);
     return ok;

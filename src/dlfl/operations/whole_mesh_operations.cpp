@@ -9,6 +9,26 @@
 
 namespace dlfl::detail {
 
+namespace {
+
+// A run whose result cannot have 32-bit handles is refused before its first step, from the scheme's closed
+// forms, rather than failing when a step runs out of handles (or memory) hours later.
+void check_handle_room(const Mesh& current, const Params& p) {
+  const auto predicted = predict_counts(p.text("scheme"), p.get("params").as_params(), counts_of(current),
+                                        p.integer("iterations"));
+  if (!predicted) return;
+  constexpr std::uint64_t limit = CornerId::invalid_index;
+  const std::uint64_t corners = 2 * predicted->edges;
+  if (corners < limit && predicted->vertices < limit && predicted->faces < limit) return;
+  throw ParameterError(std::to_string(p.integer("iterations")) + " steps of " + p.text("scheme") +
+                           " would make a mesh of " + std::to_string(predicted->faces) + " faces and " +
+                           std::to_string(corners) + " corners, more than 32-bit handles can number (" +
+                           std::to_string(limit - 1) + ")",
+                       "iterations");
+}
+
+}  // namespace
+
 std::vector<OperationSpec> whole_mesh_operation_specs() {
   std::vector<OperationSpec> ops;
 
@@ -49,7 +69,7 @@ std::vector<OperationSpec> whole_mesh_operation_specs() {
         for (std::int64_t i = 1; i < n; ++i) next = apply_scheme(next, scheme, params);
         return next;
       },
-      [](const Mesh&, Params& p) {
+      [](const Mesh& current, Params& p) {
         // Resolved now, so that an unknown scheme or a bad value fails before any work, and the log records
         // every parameter in force.
         try {
@@ -59,6 +79,7 @@ std::vector<OperationSpec> whole_mesh_operation_specs() {
         } catch (const ParameterError& e) {
           throw ParameterError(e.what(), "params." + e.parameter());
         }
+        check_handle_room(current, p);
       }));
   return ops;
 }

@@ -66,7 +66,10 @@ namespace detail {
 SchemeSpec catmull_clark_scheme() {
   return parameterless_scheme(
       catmull_clark, "catmull-clark",
-      "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh");
+      "Catmull-Clark: a quad per corner; smooth (C2 away from extraordinary points) on any polygon mesh",
+      [](const MeshCounts& c) {  // V' = V + E + F, E' = 2E + C = 4E, F' = C = 2E
+        return MeshCounts{c.vertices + c.edges + c.faces, 4 * c.edges, 2 * c.edges};
+      });
 }
 
 }  // namespace detail

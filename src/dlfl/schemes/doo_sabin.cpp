@@ -132,10 +132,10 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
   // So the F-face corner of c is the twin of E3 (c on side 0 of its edge) or E1 (side 1).
   //
   // V-face of v: its corners follow prev_around_vertex, so the corner of c runs P(c) -> P(d) with
-  // d = opposite(prev(c)): it crosses the edge g = edge(prev(c)), which arrives at v. If prev(c) is g's side-0
-  // corner, it is g's c0, B = v and c = next(c0), d = c1: the E-face side P(c1) -> P(next(c0)) is E2. If
-  // prev(c) is the side-1 corner, it is c1, A = v, c = next(c1), d = c0: the side P(c0) -> P(next(c1)) is E0.
-  // Conversely E0 pairs with the V-face corner of next(c1), and E2 with that of next(c0).
+  // d = opposite(prev(c)): it crosses the edge g = edge(prev(c)), which arrives at v. If prev(c) is g's
+  // side-0 corner, it is g's c0, B = v and c = next(c0), d = c1: the E-face side P(c1) -> P(next(c0)) is E2.
+  // If prev(c) is the side-1 corner, it is c1, A = v, c = next(c1), d = c0: the side P(c0) -> P(next(c1)) is
+  // E0. Conversely E0 pairs with the V-face corner of next(c1), and E2 with that of next(c0).
   for (std::uint32_t k = 0; k < nc; ++k) {
     const CornerId c(k);
     const EdgeId e = m.edge(c);
@@ -187,7 +187,10 @@ namespace detail {
 SchemeSpec doo_sabin_scheme() {
   return parameterless_scheme(
       doo_sabin, "doo-sabin",
-      "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent");
+      "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent",
+      [](const MeshCounts& c) {  // V' = C = 2E, E' = 2C = 4E, F' = V + E + F
+        return MeshCounts{2 * c.edges, 4 * c.edges, c.vertices + c.edges + c.faces};
+      });
 }
 
 }  // namespace detail

@@ -49,8 +49,8 @@ Mesh detail::dual(const Mesh& input, Origins* origins, std::vector<Origin>* corn
   // Twins. The dual corner of c (at v, in face f) runs from dual vertex f to dual vertex face(d), d =
   // opposite(p), p = prev(c): it crosses the input edge g = edge(p), which runs from w = vertex(p) to v. Its
   // twin is the dual corner in face w that crosses g from face(d) back to f: the corner c' at w in face(d)
-  // whose prev has edge g, i.e. prev(c') = d, c' = next(d) = next(opposite(prev(c))). (Applying the rule to c'
-  // gives next(opposite(d)) = next(p) = c back.)
+  // whose prev has edge g, i.e. prev(c') = d, c' = next(d) = next(opposite(prev(c))). (Applying the rule to
+  // c' gives next(opposite(d)) = next(p) = c back.)
   for (std::uint32_t k = 0; k < nc; ++k) {
     const CornerId c(k);
     const CornerId twin = m.next(m.opposite(m.prev(c)));
@@ -81,7 +81,10 @@ namespace detail {
 SchemeSpec dual_scheme() {
   return parameterless_scheme(
       dlfl::dual, "dual",
-      "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge");
+      "the dual mesh: a vertex per face (at its centroid), a face per vertex, an edge across every edge",
+      [](const MeshCounts& c) {
+        return MeshCounts{c.faces, c.edges, c.vertices};
+      });
 }
 
 }  // namespace detail

@@ -9,8 +9,8 @@ namespace dlfl {
 /// The dual mesh: a vertex at the centroid of every face (the average of its corners' positions, so a vertex
 /// the face visits twice counts twice), a face around every vertex, and an edge across every edge. V' = F,
 /// E' = E, F' = V; the face sizes of the dual are the valences of the input and its valences are the input's
-/// face sizes, and the topology (genus of every component) is kept. A vertex of valence 2 gives a 2-gon (legal
-/// in this kernel). The input is not modified.
+/// face sizes, and the topology (genus of every component) is kept. A vertex of valence 2 gives a 2-gon
+/// (legal in this kernel). The input is not modified.
 ///
 /// Orientation: the face of vertex v lists the faces around v counter-clockwise seen from outside, which is
 /// the `prev_around_vertex` order (`next_around_vertex` turns clockwise), so outward normals stay outward.

@@ -23,9 +23,10 @@ Mesh dual_honeycomb_dual(const Mesh& mesh, const HoneycombParams& p, Origins* or
   try {
     check_honeycomb_params(d, p);
   } catch (const InvalidArgument& e) {
-    throw InvalidArgument(std::string("dual-honeycomb-dual: ") + e.what() +
-                          " (the honeycomb step runs on the dual, whose N-sided faces are the input's N-valent "
-                          "vertices)");
+    throw InvalidArgument(
+        std::string("dual-honeycomb-dual: ") + e.what() +
+        " (the honeycomb step runs on the dual, whose N-sided faces are the input's N-valent "
+        "vertices)");
   }
   if (!origins) return dual(honeycomb(d, p));
   Origins honeycomb_origins;
@@ -47,6 +48,10 @@ SchemeSpec dual_honeycomb_dual_scheme() {
           },
           [](const Mesh& m, const Params& p, Origins* origins) {
             return dual_honeycomb_dual(m, honeycomb_params_from(p), origins);
+          },
+          // V' = V + F, E' = 3E, F' = 2E
+          [](const MeshCounts& c, const Params&) {
+            return MeshCounts{c.vertices + c.faces, 3 * c.edges, 2 * c.edges};
           }};
 }
 

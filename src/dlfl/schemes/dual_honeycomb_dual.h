@@ -20,12 +20,12 @@ namespace dlfl {
 /// duals of H's front-face edges), and one between the two faces of each input edge (E of them, the duals of
 /// the edges the honeycomb inserts). The topology of every component is kept.
 ///
-/// Comparison with Kobbelt's sqrt(3) (`sqrt3`, dlfl/schemes/sqrt3.h). On a triangle mesh (3F = 2E) the result has
-/// V' = V + F, E' = 3E, F' = 3F triangles, old vertices keeping their valence and one 6-valent vertex per old
-/// triangle, joined to its three corners and, across every old edge, to the neighbouring triangle's vertex:
-/// exactly the connectivity of sqrt(3) (insert a vertex per triangle, connect it to the corners, flip the
-/// old edges). The positions differ: sqrt(3) keeps the old positions in play (new vertex = triangle centroid,
-/// old vertex relaxed by alpha_n = (4 - 2 cos(2 pi / n)) / 9), while here no input position is used
+/// Comparison with Kobbelt's sqrt(3) (`sqrt3`, dlfl/schemes/sqrt3.h). On a triangle mesh (3F = 2E) the result
+/// has V' = V + F, E' = 3E, F' = 3F triangles, old vertices keeping their valence and one 6-valent vertex per
+/// old triangle, joined to its three corners and, across every old edge, to the neighbouring triangle's
+/// vertex: exactly the connectivity of sqrt(3) (insert a vertex per triangle, connect it to the corners, flip
+/// the old edges). The positions differ: sqrt(3) keeps the old positions in play (new vertex = triangle
+/// centroid, old vertex relaxed by alpha_n = (4 - 2 cos(2 pi / n)) / 9), while here no input position is used
 /// directly: the points come from face centroids of the first dual, smoothed by the honeycomb's a_{n,m}
 /// coefficient rule on D's faces (one per input vertex), then averaged by the second dual. Since the
 /// honeycomb keeps each face's centroid, an input vertex goes to the average of the centroids of its faces

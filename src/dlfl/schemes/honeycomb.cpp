@@ -207,7 +207,8 @@ SchemeSpec honeycomb_scheme() {
       [](const Params& given, Params& resolved) { check_honeycomb_param_set("honeycomb", given, resolved); },
       [](const Mesh& m, const Params& p, Origins* origins) {
         return honeycomb(m, honeycomb_params_from(p), origins);
-      }};
+      },
+      [](const MeshCounts& c, const Params&) { return honeycomb_counts(c); }};
 }
 
 }  // namespace detail

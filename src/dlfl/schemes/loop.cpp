@@ -136,7 +136,11 @@ Mesh loop(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec loop_scheme() {
-  return parameterless_scheme(loop, "loop", "Loop: every triangle into four, on triangle meshes");
+  return parameterless_scheme(
+      loop, "loop", "Loop: every triangle into four, on triangle meshes",
+      [](const MeshCounts& c) {  // V' = V + E, E' = 2E + 3F, F' = 4F
+        return MeshCounts{c.vertices + c.edges, 2 * c.edges + 3 * c.faces, 4 * c.faces};
+      });
 }
 
 }  // namespace detail

@@ -2,10 +2,10 @@
 
 #include <cctype>
 
-#include <dlfl/errors.h>
 #include <dlfl/analysis/convex_polyhedron.h>
-#include <dlfl/schemes/detail/meng_prautzsch_common.h>
+#include <dlfl/errors.h>
 #include <dlfl/schemes/detail/corner_origins.h>
+#include <dlfl/schemes/detail/meng_prautzsch_common.h>
 #include <dlfl/schemes/detail/meng_prautzsch_params.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
@@ -186,6 +186,12 @@ SchemeSpec mhp_scheme() {
             x.pushing = MpPushingParams{mp_step_params_from(p, "tau_p", "ratio_p")};
             x.center = mp_center_from(p);
             return mhp(m, x, {}, origins);
+          },
+          [](const MeshCounts& c, const Params& p) {
+            MeshCounts next = c;
+            for (char step : expand_mhp_pattern(p.text("pattern")))
+              next = step == 'H' ? mp_honeycomb_counts(next) : mp_pushing_counts(next);
+            return next;
           }};
 }
 

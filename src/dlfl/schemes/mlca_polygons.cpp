@@ -182,7 +182,10 @@ namespace detail {
 SchemeSpec mlca_scheme() {
   return parameterless_scheme(
       mlca, "mlca",
-      "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed");
+      "MLCA (multi-linear subdivision, cell averaging) on polygon meshes: quads, split first if needed",
+      [](const MeshCounts& c) {  // the quad split: V' = V + E + F, F' = C = 2E, so E' = 4E by Euler
+        return MeshCounts{c.vertices + c.edges + c.faces, 4 * c.edges, 2 * c.edges};
+      });
 }
 
 }  // namespace detail

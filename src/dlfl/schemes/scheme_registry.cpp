@@ -56,4 +56,22 @@ Mesh apply_scheme(const Mesh& mesh, std::string_view scheme, const Params& param
   return spec.apply(mesh, resolve(spec, params), origins);
 }
 
+MeshCounts counts_of(const Mesh& mesh) {
+  std::uint64_t spheres = 0;
+  for (VertexId v : mesh.vertices()) spheres += mesh.is_point_sphere(v);
+  return {mesh.num_vertices() - spheres, mesh.num_edges(), mesh.num_faces() - spheres};
+}
+
+std::optional<MeshCounts> predict_counts(std::string_view scheme, const Params& params, MeshCounts start,
+                                         std::int64_t iterations) {
+  const SchemeSpec& spec = find_scheme(scheme);
+  if (!spec.counts) return std::nullopt;
+  constexpr std::uint64_t far = std::uint64_t{1} << 40;
+  for (std::int64_t i = 0; i < iterations; ++i) {
+    if (start.vertices > far || start.edges > far || start.faces > far) break;
+    start = spec.counts(start, params);
+  }
+  return start;
+}
+
 }  // namespace dlfl

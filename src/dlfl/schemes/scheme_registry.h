@@ -3,7 +3,9 @@
 // parameters); generic code checks parameters, fills in defaults and refuses bad values before any work. The
 // editor, the operation log and `dlfl subdivide` / `dlfl schemes` all read this table.
 
+#include <cstdint>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -14,6 +16,15 @@
 #include <dlfl/schemes/origins.h>
 
 namespace dlfl {
+
+/// Element counts for predictions: vertices, edges and faces (hole faces included; corners are 2 x edges).
+struct MeshCounts {
+  std::uint64_t vertices = 0, edges = 0, faces = 0;
+  bool operator==(const MeshCounts&) const = default;
+};
+
+/// The counts of a mesh, point spheres left out (each is a vertex and a face without edges).
+MeshCounts counts_of(const Mesh& mesh);
 
 /// The declaration of one scheme. Each scheme's .cpp defines its own (see detail/scheme_table.h); adding a
 /// scheme is one new file plus one line in scheme_registry.cpp.
@@ -29,6 +40,9 @@ struct SchemeSpec {
   /// One step on `mesh` with resolved parameters. Fills `origins` when it is not null (see the scheme's
   /// header for what each output element's origin is).
   std::function<Mesh(const Mesh& mesh, const Params& params, Origins* origins)> apply;
+  /// The counts after one step, by the closed forms in the scheme's header (exact for a mesh without point
+  /// spheres), for predicting the size of a run before it starts. Optional.
+  std::function<MeshCounts(const MeshCounts& counts, const Params& params)> counts;
 };
 
 // Deprecated, to be removed once the editor and the operation log are rewritten on Params: the names of the
@@ -49,6 +63,12 @@ const SchemeSpec& find_scheme(std::string_view name);
 /// filled in, the scheme's own cross-checks run. Logging the result records all parameters. Throws
 /// UnknownNameError for an unknown scheme and ParameterError naming the parameter.
 Params resolve_scheme_params(std::string_view scheme, const Params& given);
+
+/// The counts after `iterations` steps of the named scheme with resolved `params`, from `start`; nullopt
+/// when the scheme declares no counts. Stops growing past 2^40 (far beyond what handles hold), so it never
+/// overflows.
+std::optional<MeshCounts> predict_counts(std::string_view scheme, const Params& params, MeshCounts start,
+                                         std::int64_t iterations);
 
 /// One step of the named scheme. `params` are resolved first (so a partial set is fine). The input is not
 /// modified. Fills `origins` when it is not null.

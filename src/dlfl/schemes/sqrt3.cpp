@@ -126,7 +126,10 @@ namespace detail {
 SchemeSpec sqrt3_scheme() {
   return parameterless_scheme(
       sqrt3, "sqrt3",
-      "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes");
+      "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes",
+      [](const MeshCounts& c) {  // V' = V + F, E' = 3E, F' = 3F
+        return MeshCounts{c.vertices + c.faces, 3 * c.edges, 3 * c.faces};
+      });
 }
 
 }  // namespace detail

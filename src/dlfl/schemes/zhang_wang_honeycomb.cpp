@@ -220,7 +220,8 @@ SchemeSpec zhang_wang_honeycomb_scheme() {
         z.c = p.number("c");
         z.alpha = p.number("alpha");
         return zhang_wang_honeycomb(m, z, origins);
-      }};
+      },
+      [](const MeshCounts& c, const Params&) { return honeycomb_counts(c); }};
 }
 
 }  // namespace detail

@@ -10,14 +10,27 @@
 
 namespace dlfl::detail {
 
-/// The declaration of a scheme without parameters, whose step is `step(mesh, origins)`.
-inline SchemeSpec parameterless_scheme(Mesh (*step)(const Mesh&, Origins*), std::string name,
-                                       std::string doc) {
+/// The declaration of a scheme without parameters, whose step is `step(mesh, origins)` and whose closed-form
+/// counts are `counts`.
+inline SchemeSpec parameterless_scheme(Mesh (*step)(const Mesh&, Origins*), std::string name, std::string doc,
+                                       MeshCounts (*counts)(const MeshCounts&)) {
   SchemeSpec spec;
   spec.name = std::move(name);
   spec.doc = std::move(doc);
   spec.apply = [step](const Mesh& mesh, const Params&, Origins* origins) { return step(mesh, origins); };
+  spec.counts = [counts](const MeshCounts& c, const Params&) { return counts(c); };
   return spec;
+}
+
+/// The closed-form counts shared by several schemes (each scheme's header derives them).
+inline MeshCounts honeycomb_counts(const MeshCounts& c) {  // V' = 2E, E' = 3E, F' = F + V
+  return {2 * c.edges, 3 * c.edges, c.faces + c.vertices};
+}
+inline MeshCounts mp_honeycomb_counts(const MeshCounts& c) {  // V' = V + 2E, E' = 4E, F' = F + E
+  return {c.vertices + 2 * c.edges, 4 * c.edges, c.faces + c.edges};
+}
+inline MeshCounts mp_pushing_counts(const MeshCounts& c) {  // V' = V + E, E' = 4E, F' = F + 2E
+  return {c.vertices + c.edges, 4 * c.edges, c.faces + 2 * c.edges};
 }
 
 // Named after their files (loop_scheme in loop.cpp), but for mhp_scheme (meng_prautzsch_mixed.cpp),
