@@ -286,3 +286,59 @@ TEST_CASE("tool: check lists the violations of a broken .json mesh; --version pr
   CHECK(std::count(v.out.begin(), v.out.end(), '.') == 2);  // MAJOR.MINOR.PATCH
 }
 #endif
+
+#ifdef DLFL_TOOL
+#include <pty.h>
+
+namespace {
+
+// Runs the tool on a pseudo-terminal (so that stderr is a terminal) and returns all it printed there.
+std::string run_on_terminal(const std::vector<std::string>& args) {
+  int master = -1;
+  const pid_t child = forkpty(&master, nullptr, nullptr, nullptr);
+  REQUIRE(child >= 0);
+  if (child == 0) {
+    setenv("DLFL_PROGRESS_AFTER", "0", 1);
+    std::vector<char*> argv{const_cast<char*>(DLFL_TOOL)};
+    for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+    argv.push_back(nullptr);
+    execv(DLFL_TOOL, argv.data());
+    _exit(127);
+  }
+  std::string out;
+  char buffer[4096];
+  for (ssize_t n; (n = read(master, buffer, sizeof buffer)) > 0;)
+    out.append(buffer, static_cast<std::size_t>(n));
+  int status = 0;
+  waitpid(child, &status, 0);
+  close(master);
+  CHECK(WIFEXITED(status));
+  CHECK(WEXITSTATUS(status) == 0);
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("tool: a progress bar on a terminal, -v lines, --quiet silences both, and no bar off a terminal") {
+  ScratchDir dir;
+  const std::string cube = std::string(DLFL_SOURCE_DIR) + "/data/cube.obj";
+  const std::string out = (dir / "x.ply").string();
+  const std::string bar = run_on_terminal({"subdivide", cube, "-s", "honeycomb", "-n", "2", "-o", out});
+  CHECK(bar.find("\rhoneycomb step 1/2 [") != std::string::npos);
+  CHECK(bar.find("\rhoneycomb step 2/2 [") != std::string::npos);
+  CHECK(bar.find("%") != std::string::npos);
+  const std::string quiet =
+      run_on_terminal({"subdivide", cube, "-s", "honeycomb", "-n", "2", "-o", out, "-v", "--quiet"});
+  CHECK(quiet.empty());
+
+  // Off a terminal: -v gives one line per file and step, and never a bar.
+  Run verbose = run("subdivide " + example("cube.obj") + " -s honeycomb -n 2 -o '" + out + "' -v");
+  CHECK(verbose.exit_code == 0);
+  CHECK(verbose.err.find('\r') == std::string::npos);
+  CHECK(verbose.err.find("read ") == 0);
+  CHECK(verbose.err.find("honeycomb step 1/2: 24 vertices, 36 edges, 14 faces in ") != std::string::npos);
+  CHECK(verbose.err.find("honeycomb step 2/2: 72 vertices, 108 edges, 38 faces in ") != std::string::npos);
+  CHECK(std::count(verbose.err.begin(), verbose.err.end(), '\n') == 4);  // read, two steps, write
+  CHECK(run("subdivide " + example("cube.obj") + " -s honeycomb -o '" + out + "' -v -q").err.empty());
+}
+#endif

@@ -4,6 +4,7 @@
 #include <dlfl/cells/cell_io.h>
 #include <dlfl/io/mesh_io.h>
 #include "commands.h"
+#include "feedback.h"
 #include "file_checks.h"
 
 namespace dlfl::tool {
@@ -28,7 +29,12 @@ Action add_convert(CLI::App& app) {
     }
     WriteOptions options;
     options.binary_ply = !*ascii;
-    write_mesh(read_mesh(*in), *out, options);
+    FileReport reading("read", *in);
+    const Mesh mesh = read_mesh(*in);
+    reading.done(mesh);
+    FileReport writing("write", *out);
+    write_mesh(mesh, *out, options);
+    writing.done(mesh);
     return ok;
   };
 }

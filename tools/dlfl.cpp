@@ -9,6 +9,7 @@
 #include <dlfl/errors.h>
 #include <dlfl/io/atomic_file.h>
 #include "commands.h"
+#include "feedback.h"
 #include "file_checks.h"
 
 int main(int argc, char** argv) {
@@ -16,6 +17,10 @@ int main(int argc, char** argv) {
   CLI::App app{"dlfl: topological modelling on the Doubly Linked Face List"};
   app.set_version_flag("--version", std::string("dlfl ") + DLFL_VERSION);
   app.require_subcommand(1);
+  // Accepted before or after the subcommand ("dlfl -v subdivide ..." or "dlfl subdivide ... -v").
+  app.fallthrough();
+  app.add_flag("-v,--verbose", feedback().verbose, "Print a summary line per step and file (counts, time)");
+  app.add_flag("-q,--quiet", feedback().quiet, "Print nothing but errors: no -v lines, no progress bar");
   // A stopped run leaves no temporary file: outputs are written beside their targets, then renamed.
   dlfl::remove_temporary_files_on_signals();
   std::map<const CLI::App*, Action> actions;

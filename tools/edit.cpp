@@ -1,6 +1,7 @@
 // dlfl edit IN -o OUT --op 'NAME key=value ...' [--op ...] [--log LOG.json [--self-contained]]
 // Applies registered operations in order; nothing is written unless every one of them succeeds.
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -8,6 +9,7 @@
 #include <dlfl/operations/operation_text.h>
 #include "commands.h"
 #include "editor_session.h"
+#include "feedback.h"
 #include "file_checks.h"
 
 namespace dlfl::tool {
@@ -42,7 +44,11 @@ Action add_edit(CLI::App& app) {
     Editor editor = open_editor(a->in, a->self_contained);
     for (std::size_t i = 0; i < ops.size(); ++i) {
       try {
+        const auto start = std::chrono::steady_clock::now();
         editor.apply(ops[i].first, ops[i].second);
+        const std::chrono::duration<double> seconds = std::chrono::steady_clock::now() - start;
+        say("--op " + std::to_string(i + 1) + " " + ops[i].first + ": " + counts_text(editor.mesh()) +
+            " in " + seconds_text(seconds.count()));
       } catch (const ParameterError& e) {
         throw ParameterError("--op " + std::to_string(i + 1) + ": " + e.what(), e.parameter());
       } catch (const UnknownNameError& e) {

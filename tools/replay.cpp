@@ -5,6 +5,7 @@
 #include <dlfl/history/oplog.h>
 #include <dlfl/io/mesh_io.h>
 #include "commands.h"
+#include "feedback.h"
 #include "file_checks.h"
 
 namespace dlfl::tool {
@@ -25,10 +26,17 @@ Action add_replay(CLI::App& app) {
     check_files({{"LOG", *log}}, {{"-o", *out}});
     ReplayOptions options;
     options.verify = !*no_verify;
-    const Editor editor = replay_log_file(*log, options);  // nothing is written unless the whole log replays
+    FileReport replaying("replay", *log);
+    const Editor editor = [&] {
+      StepReport steps(0, 0);
+      return replay_log_file(*log, options);
+    }();
+    replaying.done(editor.mesh());  // nothing is written unless the whole log replays
     WriteOptions write;
     write.binary_ply = !*ascii;
+    FileReport writing("write", *out);
     write_mesh(editor.mesh(), *out, write);
+    writing.done(editor.mesh());
     return ok;
   };
 }

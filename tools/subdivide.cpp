@@ -13,6 +13,7 @@
 #include <dlfl/schemes/scheme_registry.h>
 #include "commands.h"
 #include "editor_session.h"
+#include "feedback.h"
 #include "file_checks.h"
 
 namespace dlfl::tool {
@@ -36,6 +37,23 @@ double available_bytes() {
     meminfo.ignore(256, '\n');
   }
   return 0;
+}
+
+// The faces of all the steps' results together, by the scheme's closed forms (0 if unknown or bad): the
+// progress bar's measure of the work.
+double predicted_faces(const Mesh& input, const std::string& scheme, const Params& params, int iterations) {
+  try {
+    const Params resolved = resolve_scheme_params(scheme, params);
+    double faces = 0;
+    for (int i = 1; i <= iterations; ++i) {
+      const auto c = predict_counts(scheme, resolved, counts_of(input), i);
+      if (!c) return 0;
+      faces += static_cast<double>(c->faces);
+    }
+    return faces;
+  } catch (const Error&) {
+    return 0;  // the editor reports it
+  }
 }
 
 // Refuses, before the first step, a run whose result cannot fit in memory: the editor keeps the input, the
@@ -120,7 +138,10 @@ Action add_subdivide(CLI::App& app) {
     }
     Editor editor = open_editor(a->in, a->self_contained);
     check_memory(editor.mesh(), a->scheme, params, a->iterations);
-    editor.subdivide(a->scheme, params, a->iterations);
+    {
+      StepReport report(a->iterations, predicted_faces(editor.mesh(), a->scheme, params, a->iterations));
+      editor.subdivide(a->scheme, params, a->iterations);
+    }
     save_editor(editor, a->out, a->ascii, a->log);
     return ok;
   };

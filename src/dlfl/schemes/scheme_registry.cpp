@@ -51,9 +51,20 @@ Params resolve_scheme_params(std::string_view scheme, const Params& given) {
   return resolve(find_scheme(scheme), given);
 }
 
+namespace {
+thread_local StepObserver* step_observer = nullptr;
+}  // namespace
+
+ObservedSteps::ObservedSteps(StepObserver& observer) : previous_(step_observer) { step_observer = &observer; }
+ObservedSteps::~ObservedSteps() { step_observer = previous_; }
+
 Mesh apply_scheme(const Mesh& mesh, std::string_view scheme, const Params& params, Origins* origins) {
   const SchemeSpec& spec = find_scheme(scheme);
-  return spec.apply(mesh, resolve(spec, params), origins);
+  const Params resolved = resolve(spec, params);
+  if (step_observer) step_observer->step_started(spec.name, mesh);
+  Mesh result = spec.apply(mesh, resolved, origins);
+  if (step_observer) step_observer->step_finished(spec.name, result);
+  return result;
 }
 
 MeshCounts counts_of(const Mesh& mesh) {

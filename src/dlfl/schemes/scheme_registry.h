@@ -70,6 +70,29 @@ Params resolve_scheme_params(std::string_view scheme, const Params& given);
 std::optional<MeshCounts> predict_counts(std::string_view scheme, const Params& params, MeshCounts start,
                                          std::int64_t iterations);
 
+/// Told of every scheme step that its thread runs through apply_scheme (so through the editor, the log and
+/// the tool alike): for progress reports. Its functions must not throw.
+class StepObserver {
+ public:
+  virtual ~StepObserver() = default;
+  /// A step of `scheme` on `input` starts.
+  virtual void step_started(std::string_view scheme, const Mesh& input) = 0;
+  /// That step made `output`.
+  virtual void step_finished(std::string_view scheme, const Mesh& output) = 0;
+};
+
+/// Makes an observer the calling thread's for the lifetime of this object, then restores the one before.
+class ObservedSteps {
+ public:
+  explicit ObservedSteps(StepObserver& observer);
+  ~ObservedSteps();
+  ObservedSteps(const ObservedSteps&) = delete;
+  ObservedSteps& operator=(const ObservedSteps&) = delete;
+
+ private:
+  StepObserver* previous_;
+};
+
 /// One step of the named scheme. `params` are resolved first (so a partial set is fine). The input is not
 /// modified. Fills `origins` when it is not null.
 Mesh apply_scheme(const Mesh& mesh, std::string_view scheme, const Params& params = {},
