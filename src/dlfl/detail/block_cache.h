@@ -4,7 +4,7 @@
 // step at a million faces; a block handed back by a mesh that died is already mapped. Each step of a
 // subdivision sequence frees arrays of the sizes the next one needs, so reuse is the common case.
 //
-// Built with DLFL_NO_BLOCK_CACHE (every DLFL_SANITIZE and fuzz build) the cache is compiled out: a block
+// Built with DLFL_NO_BLOCK_CACHE (ASan, MSan and fuzz builds; not TSan) the cache is compiled out: a block
 // kept for reuse, or rounded up to 2 MiB, would hide a use after free or a read past the end from
 // AddressSanitizer, so every block then comes from operator new at its exact size.
 
