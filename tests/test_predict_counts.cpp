@@ -3,6 +3,7 @@
 
 #include <doctest/doctest.h>
 
+#include <cstdlib>
 #include <string>
 
 #include <dlfl/build_mesh.h>
@@ -85,5 +86,18 @@ TEST_CASE("tool: subdivide refuses at once a run that cannot fit, with exit 2 fo
   CHECK(r.exit_code == 2);
   CHECK(r.err.find("32-bit handles") != std::string::npos);
   CHECK(dir.entries().empty());
+
+  // A run that fits the handles but not the memory (held to 1 MB): exit 1, before any work. The cube after
+  // 6 honeycomb steps has 12 * 3^6 = 8748 edges, about 0.5 MB of arrays, times three and more at the peak.
+  setenv("DLFL_AVAILABLE_MEMORY", "1000000", 1);
+  Run memory =
+      run("subdivide " + example("cube.obj") + " -s honeycomb -n 6 -o '" + (dir / "x.obj").string() + "'");
+  unsetenv("DLFL_AVAILABLE_MEMORY");
+  CHECK(memory.exit_code == 1);
+  CHECK(memory.err.find("GiB are available") != std::string::npos);
+  CHECK(dir.entries().empty());
+  Run fits =
+      run("subdivide " + example("cube.obj") + " -s honeycomb -n 2 -o '" + (dir / "x.obj").string() + "'");
+  CHECK(fits.exit_code == 0);
 }
 #endif

@@ -2,6 +2,7 @@
 // A cell-complex file (.vtk, or .obj with points or curves) takes the cell-complex path: -s mlca only.
 
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -28,7 +29,9 @@ double mesh_bytes(const MeshCounts& c) {
 }
 
 // What the machine can still give: MemAvailable of /proc/meminfo; 0 where it is unknown.
+// DLFL_AVAILABLE_MEMORY (bytes) overrides it, to hold a run to less than the machine has.
 double available_bytes() {
+  if (const char* limit = std::getenv("DLFL_AVAILABLE_MEMORY")) return std::strtod(limit, nullptr);
   std::ifstream meminfo("/proc/meminfo");
   std::string key;
   double kib = 0;
