@@ -25,12 +25,12 @@ struct Complaint {
   std::string vertex(std::uint32_t k) const {
     return std::to_string(std::uint64_t{k} + numbering.first_vertex);
   }
-  [[noreturn]] void face(std::size_t f, const std::string& what) const {
+  [[noreturn, gnu::cold, gnu::noinline]] void face(std::size_t f, const std::string& what) const {
     std::string name = "face " + std::to_string(f + numbering.first_face);
     if (numbering.first_face != 0) name += " (f" + std::to_string(f) + ")";
     throw PolygonError(PolygonError::Element::face, f, name + ": " + what);
   }
-  [[noreturn]] void vertex_fails(std::size_t v, const std::string& what) const {
+  [[noreturn, gnu::cold, gnu::noinline]] void vertex_fails(std::size_t v, const std::string& what) const {
     std::string name = "vertex " + std::to_string(v + numbering.first_vertex);
     if (numbering.first_vertex != 0) name += " (v" + std::to_string(v) + ")";
     throw PolygonError(PolygonError::Element::vertex, v, name + ": " + what);

@@ -129,6 +129,9 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, Origins* o
   Mesh& result = out.mesh;
   const FaceAttribute<glm::dvec3> result_points =
       result.add_face_attribute<glm::dvec3>(face_point_attribute, unset_point);
+  // Every face gets a point: writing the last slot first sizes the storage once, instead of growing it with
+  // each write in handle order.
+  if (result.face_capacity() > 0) result_points[FaceId(result.face_capacity() - 1)] = unset_point;
 
   // Formula (3): the shrunken copy of each face.
   for (FaceId f : mesh.faces()) {
