@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <numbers>
 
+#include <dlfl/build_mesh.h>
+#include <dlfl/detail/block_cache.h>
+#include <dlfl/schemes/honeycomb.h>
 #include "bench_meshes.h"
 #include "bench_util.h"
-#include <dlfl/detail/block_cache.h>
-#include <dlfl/build_mesh.h>
-#include <dlfl/schemes/honeycomb.h>
 
 using namespace dlfl;
 

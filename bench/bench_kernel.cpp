@@ -8,11 +8,11 @@
 #include <numbers>
 #include <string>
 
+#include <dlfl/build_mesh.h>
+#include <dlfl/io/mesh_io.h>
+#include <dlfl/validate.h>
 #include "bench_meshes.h"
 #include "bench_util.h"
-#include <dlfl/build_mesh.h>
-#include <dlfl/validate.h>
-#include <dlfl/io/mesh_io.h>
 
 using namespace dlfl;
 

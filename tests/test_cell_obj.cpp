@@ -1,5 +1,5 @@
-// OBJ for cell complexes (dlfl/cells/cell_obj.h, dlfl/cells/cell_io.h): points, polylines and quads, round trips, errors
-// with their lines, and which files the tool must read as cell complexes.
+// OBJ for cell complexes (dlfl/cells/cell_obj.h, dlfl/cells/cell_io.h): points, polylines and quads, round
+// trips, errors with their lines, and which files the tool must read as cell complexes.
 
 #include <doctest/doctest.h>
 
@@ -7,10 +7,10 @@
 #include <string>
 #include <vector>
 
-#include "cell_file_helpers.h"
-#include <dlfl/errors.h>
 #include <dlfl/cells/cell_io.h>
 #include <dlfl/cells/cell_obj.h>
+#include <dlfl/errors.h>
+#include "cell_file_helpers.h"
 
 using namespace dlfl;
 

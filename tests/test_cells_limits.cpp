@@ -8,10 +8,10 @@
 #include <string>
 
 #include <dlfl/cells/cell_complex.h>
+#include <dlfl/cells/cell_io.h>
 #include <dlfl/cells/convert.h>
 #include <dlfl/cells/mlca_subdivide.h>
 #include <dlfl/errors.h>
-#include <dlfl/cells/cell_io.h>
 
 using namespace dlfl;
 

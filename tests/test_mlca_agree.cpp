@@ -1,7 +1,7 @@
-// The two MLCA implementations agree: the DLFL scheme `mlca` (dlfl/schemes/mlca_polygons.h, built on Catmull-Clark's
-// connectivity) and the cell-complex `mlca_subdivide` (dlfl/cells/mlca_subdivide.h, multi-linear subdivision through a hash
-// of shared sub-faces, then averaging). They share no code, so agreement on meshes with extraordinary
-// vertices (where MLCA differs from Catmull-Clark) checks both.
+// The two MLCA implementations agree: the DLFL scheme `mlca` (dlfl/schemes/mlca_polygons.h, built on
+// Catmull-Clark's connectivity) and the cell-complex `mlca_subdivide` (dlfl/cells/mlca_subdivide.h,
+// multi-linear subdivision through a hash of shared sub-faces, then averaging). They share no code, so
+// agreement on meshes with extraordinary vertices (where MLCA differs from Catmull-Clark) checks both.
 
 #include <doctest/doctest.h>
 
@@ -10,9 +10,9 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
+#include <dlfl/build_mesh.h>
 #include <dlfl/cells/convert.h>
 #include <dlfl/cells/mlca_subdivide.h>
-#include <dlfl/build_mesh.h>
 #include <dlfl/schemes/mlca_polygons.h>
 #include "test_meshes.h"
 

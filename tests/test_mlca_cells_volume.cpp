@@ -13,14 +13,14 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/build_mesh.h>
 #include <dlfl/cells/cell_average.h>
 #include <dlfl/cells/convert.h>
 #include <dlfl/cells/mlca_subdivide.h>
 #include <dlfl/cells/multilinear_subdivide.h>
-#include <dlfl/build_mesh.h>
 #include <dlfl/errors.h>
-#include "scheme_meshes.h"
 #include <dlfl/schemes/dual.h>
+#include "scheme_meshes.h"
 #include "test_meshes.h"
 #include "test_mlca_cells_util.h"
 

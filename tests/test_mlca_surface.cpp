@@ -1,6 +1,6 @@
-// MLCA on DLFL quad surfaces (dlfl/schemes/mlca_polygons.h): equality with Catmull-Clark on 4-valent quad meshes, the
-// composite weights of formula (2) re-derived from the combinatorics, counts, the split to quads, open
-// boundaries as crease curves, point spheres, affine invariance.
+// MLCA on DLFL quad surfaces (dlfl/schemes/mlca_polygons.h): equality with Catmull-Clark on 4-valent quad
+// meshes, the composite weights of formula (2) re-derived from the combinatorics, counts, the split to quads,
+// open boundaries as crease curves, point spheres, affine invariance.
 
 #include <doctest/doctest.h>
 

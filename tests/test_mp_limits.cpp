@@ -7,8 +7,8 @@
 #include <string>
 
 #include <dlfl/errors.h>
-#include <dlfl/schemes/meng_prautzsch_mixed.h>
 #include <dlfl/schemes/meng_prautzsch_honeycomb.h>
+#include <dlfl/schemes/meng_prautzsch_mixed.h>
 #include <dlfl/schemes/meng_prautzsch_pushing.h>
 #include "test_meshes.h"
 

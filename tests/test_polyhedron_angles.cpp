@@ -1,7 +1,7 @@
-// The angle measurements of Meng-Prautzsch definition 2.3 (dlfl/analysis/polyhedron_angles.h): exact spherical
-// diameters of Gaussian-image polygons and of unions of them. Expected values are derived by hand in the
-// comments, or computed here independently: normals from cross products of the test's own, Gaussian polygons
-// walked by the test, and diameters by brute force over densely sampled points of the arcs.
+// The angle measurements of Meng-Prautzsch definition 2.3 (dlfl/analysis/polyhedron_angles.h): exact
+// spherical diameters of Gaussian-image polygons and of unions of them. Expected values are derived by hand
+// in the comments, or computed here independently: normals from cross products of the test's own, Gaussian
+// polygons walked by the test, and diameters by brute force over densely sampled points of the arcs.
 
 #include <doctest/doctest.h>
 
@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "convex_meshes.h"
+#include <dlfl/analysis/polyhedron_angles.h>
 #include <dlfl/build_mesh.h>
 #include <dlfl/errors.h>
-#include <dlfl/analysis/polyhedron_angles.h>
+#include "convex_meshes.h"
 #include "test_meshes.h"
 
 using namespace dlfl;

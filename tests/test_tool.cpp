@@ -136,7 +136,8 @@ TEST_CASE("tool: subdivide writes the honeycomb and a log that replays to the sa
   CHECK(doc["ops"][1]["params"] == nlohmann::json({{"t", 0.5}, {"a0", 0.45}, {"a1", 1.25}}));
 }
 
-TEST_CASE("tool: subdivide rejects bad parameters with one line, exit 2 (a usage error), and writes nothing") {
+TEST_CASE(
+    "tool: subdivide rejects bad parameters with one line, exit 2 (a usage error), and writes nothing") {
   const auto out = scratch("never2.obj");
   for (const char* params :
        {"--param t=1.5", "--param a=0", "--param nope=1", "--param t", "--param a=0.5 --param a0=0.4"}) {

@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include <dlfl/errors.h>
 #include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/errors.h>
 
 namespace dlfl {
 namespace {

@@ -5,11 +5,11 @@
 #include <string>
 #include <system_error>
 
+#include <dlfl/cells/cell_obj.h>
+#include <dlfl/cells/vtk.h>
 #include <dlfl/errors.h>
 #include <dlfl/io/atomic_file.h>
-#include <dlfl/cells/cell_obj.h>
 #include <dlfl/io/detail/text_io.h>
-#include <dlfl/cells/vtk.h>
 
 namespace dlfl {
 namespace {

@@ -1,6 +1,7 @@
 #pragma once
-// Cell complexes in files, format by extension: .vtk (VTK legacy unstructured grid, dlfl/cells/vtk.h) and .obj
-// (dlfl/cells/cell_obj.h). The tool asks `is_cell_complex_file` to choose between the DLFL and the cell-complex path.
+// Cell complexes in files, format by extension: .vtk (VTK legacy unstructured grid, dlfl/cells/vtk.h) and
+// .obj (dlfl/cells/cell_obj.h). The tool asks `is_cell_complex_file` to choose between the DLFL and the
+// cell-complex path.
 
 #include <filesystem>
 

@@ -9,8 +9,8 @@
 
 #include <dlfl/cells/detail/vertex_set_map.h>
 #include <dlfl/detail/block_cache.h>
-#include <dlfl/errors.h>
 #include <dlfl/detail/large_allocator.h>
+#include <dlfl/errors.h>
 
 namespace dlfl {
 
