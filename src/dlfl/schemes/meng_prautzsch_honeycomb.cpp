@@ -163,13 +163,11 @@ Mesh detail::mp_honeycomb(const Mesh& input, const MpHoneycombParams& params, Or
 namespace detail {
 
 SchemeSpec mp_honeycomb_scheme() {
-  SchemeSpec spec = mp_step_scheme<MpHoneycombParams>(
+  return mp_step_scheme<MpHoneycombParams>(
       dlfl::mp_honeycomb, "mp-honeycomb",
       "Meng-Prautzsch honeycomb H: convexity-preserving refinement of convex polyhedra by cutting planes",
       "where each f-face lies between its old face (0) and the vertex v_F of the region over it (1)",
-      "how each edge plane divides the edge's exterior angle, ratio : 1 (1 bisects)");
-  spec.counts = [](const MeshCounts& c, const Params&) { return mp_honeycomb_counts(c); };
-  return spec;
+      "how each edge plane divides the edge's exterior angle, ratio : 1 (1 bisects)", mp_honeycomb_counts);
 }
 
 }  // namespace detail

@@ -26,13 +26,12 @@ Mesh mp_pushing(const Mesh& input, const MpPushingParams& params, Origins* origi
 }
 
 SchemeSpec detail::mp_pushing_scheme() {
-  SchemeSpec spec = mp_step_scheme<MpPushingParams>(
+  return mp_step_scheme<MpPushingParams>(
       dlfl::mp_pushing, "mp-pushing",
       "Meng-Prautzsch corner pushing P: cut every corner off, push the old vertices towards the centre",
       "how far each old vertex moves towards the centre, as a fraction of the way to its extreme position",
-      "where each edge's new point divides it: |from(e) m| : |m to(e)| = ratio : 1 (1: the midpoint)");
-  spec.counts = [](const MeshCounts& c, const Params&) { return mp_pushing_counts(c); };
-  return spec;
+      "where each edge's new point divides it: |from(e) m| : |m to(e)| = ratio : 1 (1: the midpoint)",
+      mp_pushing_counts);
 }
 
 double pushing_extreme_fraction(const glm::dvec3& p, std::span<const glm::dvec3> ring,

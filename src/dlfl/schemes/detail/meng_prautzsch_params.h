@@ -36,7 +36,8 @@ MpStepParams mp_step_params_from(const Params& resolved, const char* tau, const 
 /// `mp_pushing`) runs on them.
 template <class StepParams>
 SchemeSpec mp_step_scheme(Mesh (*step)(const Mesh&, const StepParams&, Origins*), std::string name,
-                          std::string doc, std::string tau_doc, std::string ratio_doc) {
+                          std::string doc, std::string tau_doc, std::string ratio_doc,
+                          MeshCounts (*counts)(const MeshCounts&)) {
   SchemeSpec spec;
   spec.name = std::move(name);
   spec.doc = std::move(doc);
@@ -45,6 +46,7 @@ SchemeSpec mp_step_scheme(Mesh (*step)(const Mesh&, const StepParams&, Origins*)
   spec.apply = [step](const Mesh& mesh, const Params& p, Origins* origins) {
     return step(mesh, StepParams{mp_step_params_from(p, "tau", "ratio")}, origins);
   };
+  spec.counts = [counts](const MeshCounts& c, const Params&) { return counts(c); };
   return spec;
 }
 
