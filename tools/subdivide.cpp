@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,34 +43,26 @@ double available_bytes() {
   return 0;
 }
 
-// The faces of all the steps' results together, by the scheme's closed forms (0 if unknown or bad): the
-// progress bar's measure of the work.
-double predicted_faces(const Mesh& input, const std::string& scheme, const Params& params, int iterations) {
-  try {
-    const Params resolved = resolve_scheme_params(scheme, params);
-    double faces = 0;
-    for (int i = 1; i <= iterations; ++i) {
-      const auto c = predict_counts(scheme, resolved, counts_of(input), i);
-      if (!c) return 0;
-      faces += static_cast<double>(c->faces);
-    }
-    return faces;
-  } catch (const Error&) {
-    return 0;  // the editor reports it
-  }
-}
-
-// Refuses, before the first step, a run whose result cannot fit in memory: the editor keeps the input, the
-// last step reads the mesh before it while it builds the result, and writing it converts it once more, so
-// the peak is taken as the input plus three times the result.
-void check_memory(const Mesh& input, const std::string& scheme, const Params& params, int iterations) {
+// Plans a run from the scheme's closed forms, before the first step. Refuses a run whose result cannot fit
+// in memory: the editor keeps the input, the last step reads the mesh before it while it builds the result,
+// and writing it converts it once more, so the peak is taken as the input plus three times the result.
+// Returns the faces of all the steps' results together, the progress bar's measure of the work (0 if the
+// scheme declares no counts).
+double plan_run(const Mesh& input, const std::string& scheme, const Params& params, int iterations) {
   const Params resolved = resolve_scheme_params(scheme, params);
-  const auto predicted = predict_counts(scheme, resolved, counts_of(input), iterations);
+  const MeshCounts start = counts_of(input);
+  double faces = 0;
+  std::optional<MeshCounts> predicted = start;
+  for (int i = 1; i <= iterations && predicted; ++i) {
+    predicted = predict_counts(scheme, resolved, *predicted, 1);
+    if (predicted) faces += static_cast<double>(predicted->faces);
+  }
   const double available = available_bytes();
   // Results beyond 32-bit handles are the subdivide operation's own refusal (a usage error, exit 2).
-  if (!predicted || available == 0 || 2 * predicted->edges >= CornerId::invalid_index) return;
-  const double needed = mesh_bytes(counts_of(input)) + 3 * mesh_bytes(*predicted);
-  if (needed <= available) return;
+  if (!predicted || available == 0 || 2 * predicted->edges >= CornerId::invalid_index)
+    return predicted ? faces : 0;
+  const double needed = mesh_bytes(start) + 3 * mesh_bytes(*predicted);
+  if (needed <= available) return faces;
   auto gib = [](double bytes) {
     char text[32];
     std::snprintf(text, sizeof text, "%.1f", bytes / (1024.0 * 1024.0 * 1024.0));
@@ -140,9 +133,9 @@ Action add_subdivide(CLI::App& app) {
       params[name] = std::move(value);
     }
     Editor editor = open_editor(a->in, a->self_contained);
-    check_memory(editor.mesh(), a->scheme, params, a->iterations);
+    const double predicted_faces = plan_run(editor.mesh(), a->scheme, params, a->iterations);
     {
-      StepReport report(a->iterations, predicted_faces(editor.mesh(), a->scheme, params, a->iterations));
+      StepReport report(a->iterations, predicted_faces);
       editor.subdivide(a->scheme, params, a->iterations);
     }
     save_editor(editor, a->out, a->ascii, a->log);
