@@ -85,6 +85,13 @@ void Transaction::set_position(VertexId v, const glm::dvec3& position) {
   apply(step);
 }
 
+void Transaction::set_hole(FaceId f, bool hole) {
+  Step step{Step::Kind::set_hole};
+  step.face = f;
+  step.hole = hole;
+  apply(step);
+}
+
 FaceManifold Transaction::create_face_manifold(std::span<const glm::dvec3> positions,
                                                std::span<VertexId> vertices,
                                                std::span<CornerId> front_corners,

@@ -82,6 +82,8 @@ class Transaction {
   VertexId subdivide_edge(EdgeId e, const glm::dvec3& position);
   void unsubdivide_edge(VertexId v);
   void set_position(VertexId v, const glm::dvec3& position);
+  /// Flags a face as a hole or as a surface face (no change to the topology).
+  void set_hole(FaceId f, bool hole);
   /// CREATEFACEMANIFOLD (N create_vertex, then N insert_edge), as the free function of the same name.
   FaceManifold create_face_manifold(std::span<const glm::dvec3> positions, std::span<VertexId> vertices = {},
                                     std::span<CornerId> front_corners = {},

@@ -16,9 +16,28 @@ std::vector<OperationSpec> attribute_operation_specs();   // set_attribute.cpp
 std::vector<OperationSpec> whole_mesh_operation_specs();  // whole_mesh_operations.cpp
 std::vector<OperationSpec> history_operation_specs();     // history_operations.cpp
 
+// Local editing (docs/modeling.md)
+
+// Handles and connections (docs/modeling.md)
+
+// Extrusions (docs/modeling.md)
+
+// One entry per line, grouped as the declarations above (kept out of clang-format so that adding one
+// entry touches one line).
+// clang-format off
 inline constexpr std::array operation_files = {
-    &euler_operation_specs,      &face_point_operation_specs, &attribute_operation_specs,
-    &whole_mesh_operation_specs, &history_operation_specs,
+    &euler_operation_specs,
+    &face_point_operation_specs,
+    &attribute_operation_specs,
+    &whole_mesh_operation_specs,
+    &history_operation_specs,
+
+    // Local editing
+
+    // Handles and connections
+
+    // Extrusions
 };
+// clang-format on
 
 }  // namespace dlfl::detail
