@@ -119,6 +119,7 @@ Mesh MeshBuilder::build(const PolygonSoup& soup, const SoupNumbering& numbering)
 
   // Hole faces. The hole corner of boundary half-edge k (a -> b) sits at b and runs back to a; the hole walk
   // goes on at a with the hole corner of the one boundary half-edge that arrives at a.
+  std::size_t hole_faces = 0;
   if (!boundary.empty()) {
     std::vector<std::uint32_t> arriving(nv, none);  // vertex -> boundary slot of the half-edge arriving there
     for (std::uint32_t s = 0; s < boundary.size(); ++s) {
@@ -155,6 +156,7 @@ Mesh MeshBuilder::build(const PolygonSoup& soup, const SoupNumbering& numbering)
         c = m.corners_[c].next.index();
       } while (c != h);
       m.faces_.push_back({CornerId(h), size, true, true});
+      ++hole_faces;
     }
   }
 
@@ -180,7 +182,7 @@ Mesh MeshBuilder::build(const PolygonSoup& soup, const SoupNumbering& numbering)
   m.live_vertices_ = nv;
   m.live_edges_ = m.edges_.size();
   m.live_faces_ = m.faces_.size();
-  m.live_hole_faces_ = m.count_hole_faces();
+  m.live_hole_faces_ = hole_faces;
   m.live_corners_ = m.corners_.size();
 
   // A manifold vertex has all its corners on one rotation cycle; more than one cycle is a pinch (two cones

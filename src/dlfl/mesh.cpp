@@ -69,12 +69,6 @@ void Mesh::reserve(std::size_t vertices, std::size_t edges, std::size_t faces, s
   }
 }
 
-std::size_t Mesh::count_hole_faces() const {
-  std::size_t n = 0;
-  for (const FaceRecord& f : faces_) n += f.alive && f.hole;
-  return n;
-}
-
 std::uint32_t Mesh::valence(VertexId v) const {
   if (is_point_sphere(v)) return 0;
   std::uint32_t n = 0;

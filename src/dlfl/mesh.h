@@ -551,9 +551,6 @@ class Mesh {
       if (y == y_stop) return {k, false};
     }
   }
-  // The live hole faces, counted from scratch: for the builders that write the arrays directly.
-  std::size_t count_hole_faces() const;
-
   // Attribute lookup shared by the typed and the type-erased API. `find_column` gives null for a missing
   // attribute and throws InvalidArgument for one of another type; `add_column` adds or returns it.
   detail::AttributeColumn* find_column(ElementKind kind, std::string_view name, AttributeType type) const;

@@ -84,7 +84,7 @@ Mesh MeshAssembler::finish() {
   m.live_vertices_ = m.positions_.size();
   m.live_edges_ = m.edges_.size();
   m.live_faces_ = m.faces_.size();
-  m.live_hole_faces_ = m.count_hole_faces();
+  m.live_hole_faces_ = hole_faces_;
   m.live_corners_ = nc;
   twin_.clear();
   return std::move(m);

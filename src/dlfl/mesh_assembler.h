@@ -45,7 +45,11 @@ class MeshAssembler {
     mesh_.corners_[k].vertex = VertexId(v);
     twin_[k] = twin;
   }
-  void set_hole(std::uint32_t f, bool hole) { mesh_.faces_[f].hole = hole; }
+  void set_hole(std::uint32_t f, bool hole) {
+    // Counted here, so that finish() needs no pass over the faces for it.
+    hole_faces_ += std::size_t(hole) - std::size_t(mesh_.faces_[f].hole);
+    mesh_.faces_[f].hole = hole;
+  }
 
   /// Links faces, creates edges and vertex anchors, and returns the mesh. Throws InvalidArgument if a twin
   /// does not name its corner back or a vertex has no corner.
@@ -67,6 +71,7 @@ class MeshAssembler {
 
   Mesh mesh_;
   detail::LargeVector<std::uint32_t> twin_;
+  std::size_t hole_faces_ = 0;
 };
 
 }  // namespace dlfl
