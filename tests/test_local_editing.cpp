@@ -365,6 +365,55 @@ TEST_CASE("collapse_edge: cleanup removes k = 0, 1, 2 two-gons") {
 }
 
 TEST_CASE(
+    "collapse_edge: a vertex between two triangles only (a lens in a tetrahedron's edge), and a dangling "
+    "edge") {
+  SUBCASE("the lens: cleanup removes both 2-gons, k = 2, and the tetrahedron is back") {
+    // Edge 0 1 of the tetrahedron is doubled (a 2-gon in face f0), and a vertex v inside that 2-gon is joined
+    // to 0 and 1: the triangles (v 0 1) and (v 1 0), on the two parallel edges. V 5, E 9, F 6.
+    Mesh m = mesh_of(test::tetrahedron_soup());
+    const CornerId at0 = corner_of(m, 0, 0);
+    const CornerId at1 = corner_of(m, 1, 0);
+    const InsertEdgeResult doubled = m.insert_edge(at0, at1);
+    const CornerId two_gon_at1 = m.corner(doubled.edge, 1);  // in the 2-gon, before at0
+    REQUIRE(m.size(m.face(at0)) == 2);
+    const VertexId v = m.create_vertex(glm::dvec3(1, 0, 0));
+    const EdgeId e = m.insert_edge(at0, m.corner(v)).edge;  // from 0
+    m.insert_edge(m.corner(v), two_gon_at1);
+    REQUIRE(counts(m) == (Counts{5, 9, 6}));
+    REQUIRE(m.valence(v) == 2);
+    for (int side : {0, 1}) REQUIRE(m.size(m.face(e, side)) == 3);
+    const Params out = apply_exactly(m, "collapse_edge", {{"edge", e}, {"cleanup", true}});
+    CHECK(counts(m) == (Counts{4, 6, 4}));
+    CHECK(out.integer("two_gons_removed") == 2);
+    CHECK(out.handle<VertexId>("vertex") == V(0));
+    for (FaceId f : m.faces()) CHECK(m.size(f) == 3);
+    CHECK(counts(build_mesh(to_polygons(m))) == (Counts{4, 6, 4}));
+  }
+  SUBCASE("a dangling edge to a point sphere: either end can go") {
+    // The cube with a point sphere joined to vertex 7 by an edge: V 9, E 13, F 6.
+    const Mesh cube = mesh_of(test::cube_soup());
+    Mesh m = cube;
+    VertexId sphere = m.create_vertex(glm::dvec3(2, 2, 2));
+    const EdgeId from_cube = m.insert_edge(corner_of(m, 7, 1), m.corner(sphere)).edge;
+    REQUIRE(counts(m) == (Counts{9, 13, 6}));
+    apply_exactly(m, "collapse_edge", {{"edge", from_cube}, {"position", glm::dvec3(1, 1, 1)}});
+    CHECK(counts(m) == (Counts{8, 12, 6}));  // the sphere's vertex is gone, the cube's shape back
+    CHECK_FALSE(m.is_alive(sphere));
+    CHECK(m.valence(V(7)) == 3);
+    CHECK(signed_volume(m) == doctest::Approx(8.0));
+    // The other way round, the point sphere's vertex takes vertex 7's three edges.
+    m = cube;
+    sphere = m.create_vertex(glm::dvec3(2, 2, 2));
+    const EdgeId from_sphere = m.insert_edge(m.corner(sphere), corner_of(m, 7, 1)).edge;
+    apply_exactly(m, "collapse_edge", {{"edge", from_sphere}});
+    CHECK(counts(m) == (Counts{8, 12, 6}));
+    CHECK_FALSE(m.is_alive(V(7)));
+    CHECK(m.valence(sphere) == 3);
+    CHECK(m.position(sphere) == glm::dvec3(1.5, 1.5, 1.5));
+  }
+}
+
+TEST_CASE(
     "collapse_edge: hole faces keep their flags; a triangular hole becomes a 2-gon hole, not cleaned up") {
   // A tetrahedron with one face made a hole. Collapsing each edge of that hole: the hole triangle becomes a
   // 2-gon hole that stays, the surface triangle on the other side a 2-gon that cleanup removes: V 3, E 4,

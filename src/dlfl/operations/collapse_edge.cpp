@@ -9,7 +9,6 @@
 #include <string>
 #include <vector>
 
-#include <dlfl/errors.h>
 #include <dlfl/operations/detail/operation_table.h>
 #include <dlfl/operations/detail/refusal.h>
 #include <dlfl/operations/detail/vertex_merge.h>

@@ -11,7 +11,6 @@
 #include <string>
 #include <vector>
 
-#include <dlfl/errors.h>
 #include <dlfl/navigation.h>
 #include <dlfl/operations/collapse_edge.h>
 #include <dlfl/operations/detail/operation_table.h>

@@ -3,6 +3,7 @@
 // word it ("collapse_edge: parameter edge: ..."), and the checks of handle and point arguments that the
 // registry makes too, repeated because the library functions are also called directly.
 
+#include <cstddef>
 #include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
@@ -20,6 +21,9 @@ template <class H>
 void require_live(const Mesh& mesh, std::string_view op, std::string_view param, H h) {
   if (!mesh.is_alive(h)) refuse(op, param, to_string(h) + " does not exist (removed or never created)");
 }
+
+/// "1 neighbour", "3 neighbours": a count with its noun, for messages.
+std::string count_of(std::size_t n, const char* noun);
 
 /// Refuses `param` unless every coordinate of p is finite.
 void require_finite(std::string_view op, std::string_view param, const glm::dvec3& p);

@@ -1,7 +1,6 @@
 #include <dlfl/operations/detail/vertex_merge.h>
 
 #include <algorithm>
-#include <string>
 
 #include <dlfl/navigation.h>
 
@@ -18,10 +17,6 @@ std::vector<VertexId> common_neighbours(const Mesh& mesh, VertexId u, VertexId v
   std::sort(common.begin(), common.end());
   common.erase(std::unique(common.begin(), common.end()), common.end());  // parallel edges name w twice
   return common;
-}
-
-std::string count_of(std::size_t n, const char* noun) {
-  return std::to_string(n) + " " + noun + (n == 1 ? "" : "s");
 }
 
 void append_hole_flags(const Mesh& mesh, CornerId first, CornerId stop, std::vector<bool>& flags) {

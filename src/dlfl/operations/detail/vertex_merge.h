@@ -3,7 +3,6 @@
 // vertices they merge into one (docs/modeling.md, "collapse_edge"). Each is O(the valences involved).
 
 #include <cstddef>
-#include <string>
 #include <vector>
 
 #include <dlfl/mesh.h>
@@ -12,9 +11,6 @@ namespace dlfl::detail {
 
 /// The distinct vertices joined by an edge to both u and v, u and v themselves left out, sorted.
 std::vector<VertexId> common_neighbours(const Mesh& mesh, VertexId u, VertexId v);
-
-/// "1 neighbour", "3 neighbours": a count with its noun.
-std::string count_of(std::size_t n, const char* noun);
 
 /// The hole flags of the faces of the corners around a vertex, from `first` (included) along
 /// `next_around_vertex` up to `stop` (excluded), appended to `flags`. `stop` must be on that rotation.
