@@ -17,6 +17,12 @@ std::vector<OperationSpec> whole_mesh_operation_specs();  // whole_mesh_operatio
 std::vector<OperationSpec> history_operation_specs();     // history_operations.cpp
 
 // Local editing (docs/modeling.md)
+std::vector<OperationSpec> collapse_edge_operation_specs();   // collapse_edge.cpp
+std::vector<OperationSpec> splice_corners_operation_specs();  // splice_corners.cpp
+std::vector<OperationSpec> divide_edge_operation_specs();     // divide_edge.cpp
+std::vector<OperationSpec> flip_edge_operation_specs();       // flip_edge.cpp
+std::vector<OperationSpec> make_hole_operation_specs();       // make_hole.cpp
+std::vector<OperationSpec> fill_hole_operation_specs();       // fill_hole.cpp
 
 // Handles and connections (docs/modeling.md)
 
@@ -33,6 +39,12 @@ inline constexpr std::array operation_files = {
     &history_operation_specs,
 
     // Local editing
+    &collapse_edge_operation_specs,
+    &splice_corners_operation_specs,
+    &divide_edge_operation_specs,
+    &flip_edge_operation_specs,
+    &make_hole_operation_specs,
+    &fill_hole_operation_specs,
 
     // Handles and connections
 
