@@ -18,6 +18,9 @@ std::vector<OperationSpec> history_operation_specs();     // history_operations.
 
 // Local editing (docs/modeling.md)
 
+std::vector<OperationSpec> stellate_face_operation_specs();        // stellate_face.cpp
+std::vector<OperationSpec> subdivide_face_operation_specs();       // subdivide_face.cpp
+
 // Handles and connections (docs/modeling.md)
 
 // Extrusions (docs/modeling.md)
@@ -33,6 +36,9 @@ inline constexpr std::array operation_files = {
     &history_operation_specs,
 
     // Local editing
+
+    &stellate_face_operation_specs,
+    &subdivide_face_operation_specs,
 
     // Handles and connections
 
