@@ -20,6 +20,7 @@ std::vector<OperationSpec> history_operation_specs();     // history_operations.
 
 std::vector<OperationSpec> stellate_face_operation_specs();        // stellate_face.cpp
 std::vector<OperationSpec> subdivide_face_operation_specs();       // subdivide_face.cpp
+std::vector<OperationSpec> triangulate_operation_specs();          // triangulate.cpp
 
 // Handles and connections (docs/modeling.md)
 
@@ -39,6 +40,7 @@ inline constexpr std::array operation_files = {
 
     &stellate_face_operation_specs,
     &subdivide_face_operation_specs,
+    &triangulate_operation_specs,
 
     // Handles and connections
 
