@@ -21,6 +21,7 @@ std::vector<OperationSpec> history_operation_specs();     // history_operations.
 std::vector<OperationSpec> stellate_face_operation_specs();        // stellate_face.cpp
 std::vector<OperationSpec> subdivide_face_operation_specs();       // subdivide_face.cpp
 std::vector<OperationSpec> triangulate_operation_specs();          // triangulate.cpp
+std::vector<OperationSpec> reverse_orientation_operation_specs();  // reverse_orientation.cpp
 
 // Handles and connections (docs/modeling.md)
 
@@ -41,6 +42,7 @@ inline constexpr std::array operation_files = {
     &stellate_face_operation_specs,
     &subdivide_face_operation_specs,
     &triangulate_operation_specs,
+    &reverse_orientation_operation_specs,
 
     // Handles and connections
 
