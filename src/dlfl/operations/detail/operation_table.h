@@ -22,6 +22,7 @@ std::vector<OperationSpec> stellate_face_operation_specs();        // stellate_f
 std::vector<OperationSpec> subdivide_face_operation_specs();       // subdivide_face.cpp
 std::vector<OperationSpec> triangulate_operation_specs();          // triangulate.cpp
 std::vector<OperationSpec> reverse_orientation_operation_specs();  // reverse_orientation.cpp
+std::vector<OperationSpec> transform_operation_specs();            // transform.cpp
 
 // Handles and connections (docs/modeling.md)
 
@@ -43,6 +44,7 @@ inline constexpr std::array operation_files = {
     &subdivide_face_operation_specs,
     &triangulate_operation_specs,
     &reverse_orientation_operation_specs,
+    &transform_operation_specs,
 
     // Handles and connections
 
