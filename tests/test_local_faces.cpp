@@ -283,6 +283,13 @@ TEST_CASE("stellate_face: refusals name the argument and change nothing") {
   const FaceId sphere = with_sphere.face(with_sphere.corner(p));
   CHECK(refusal(with_sphere, "stellate_face", {{"face", sphere}}, "face").find("point sphere") !=
         std::string::npos);
+  // An apex past the largest double: the cube blown up to +-1e308, raised by 1e308 more.
+  Mesh huge = test::cube();
+  apply_operation(huge, "transform", {{"scale", glm::dvec3(1e308)}});
+  CHECK(refusal(huge, "stellate_face", {{"face", 1}, {"height", 1e308}}, "face").find("non-finite") !=
+        std::string::npos);
+  CHECK(refusal(huge, "stellate_face", {{"faces", "0,1"}, {"height", 1e308}}, "faces")
+            .find("lists f0, which would get its new vertex at a non-finite position") != std::string::npos);
   // The library function refuses the same way.
   Mesh m = grid;
   Transaction tx(m);

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <string_view>
 
 #include <dlfl/errors.h>
 #include <dlfl/geometry.h>
@@ -54,15 +55,18 @@ void check_stellate_faces(const Mesh& m, std::span<const FaceId> faces, double h
                           const char* parameter) {
   if (!std::isfinite(height)) refuse("height", "is not finite");
   if (faces.empty()) refuse(parameter, "is empty: no face to stellate");
+  const bool one = std::string_view(parameter) == "face";
   for (FaceId f : faces) {
-    const std::string named = "= " + std::to_string(f.valid() ? std::int64_t(f.index()) : -1) + ": ";
-    if (!m.is_alive(f))
-      refuse(parameter, named + to_string(f) + " does not exist (removed or never created)");
-    if (m.is_hole(f)) refuse(parameter, named + to_string(f) + " is a hole face, not a surface face");
-    if (m.size(f) < 2) refuse(parameter, named + to_string(f) + " is a point sphere's face (it has no edge)");
+    // "face = 6: f6 is ..." or "faces lists f6, which is ...".
+    const std::string who =
+        one ? "= " + std::to_string(f.valid() ? std::int64_t(f.index()) : -1) + ": " + to_string(f)
+            : "lists " + to_string(f) + ", which";
+    if (!m.is_alive(f)) refuse(parameter, who + " does not exist (removed or never created)");
+    if (m.is_hole(f)) refuse(parameter, who + " is a hole face, not a surface face");
+    if (m.size(f) < 2) refuse(parameter, who + " is a point sphere's face (it has no edge)");
     const glm::dvec3 p = apex(m, f, height);
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-      refuse(parameter, named + "the new vertex of " + to_string(f) + " would not be at a finite position");
+      refuse(parameter, who + " would get its new vertex at a non-finite position");
     }
   }
   if (faces.size() > 1) {
@@ -110,9 +114,9 @@ std::vector<OperationSpec> stellate_face_operation_specs() {
   return {edit_operation(
       "stellate_face",
       "a new vertex above the face's centroid, joined to every corner: an n-gon becomes n triangles",
-      {param("face", ParamType::face, "the face to stellate").optional("none: faces is given"),
+      {param("face", ParamType::face, "the face to stellate").optional("exactly one of face and faces"),
        param("faces", ParamType::faces, "several faces, each stellated on its own")
-           .optional("none: face is given"),
+           .optional("exactly one of face and faces"),
        param("height", ParamType::number, 0.0, "how far the new vertex is moved along the face's normal")},
       "V+1, E+n, F+n-1 per face",
       [](Transaction& tx, const Params& p) {
