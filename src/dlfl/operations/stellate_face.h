@@ -31,14 +31,14 @@ struct StellateFaceResult {
 /// to every corner. An n-gon becomes n triangles: V+1, E+n, F+n-1. Triangles keep f's orientation and its
 /// (surface) hole flag. O(n).
 ///
-/// Throws ParameterError naming "face" (mesh unchanged) for a removed face, a hole face, a point sphere's
-/// face or a non-finite height.
+/// Throws ParameterError (mesh unchanged) naming "face" for a removed face, a hole face, a point sphere's
+/// face or a new vertex that would not be at a finite position, and naming "height" for a non-finite height.
 StellateFaceResult stellate_face(Transaction& tx, FaceId f, const StellateFaceOptions& options = {});
 
 /// Stellates each face on its own, as stellate_face: V+k, E+sum n, F+sum (n-1) for k faces. O(sum n).
 ///
-/// Throws ParameterError naming "faces" (mesh unchanged) for an empty list, a face listed twice, or any face
-/// stellate_face would refuse.
+/// Throws ParameterError (mesh unchanged) naming "faces" for an empty list, a face listed twice, or any face
+/// stellate_face would refuse ("height" for a non-finite height).
 StellateFaceResult stellate_faces(Transaction& tx, std::span<const FaceId> faces,
                                   const StellateFaceOptions& options = {});
 
