@@ -552,12 +552,23 @@ TEST_CASE("triangulate: a prism on a star keeps its volume") {
   for (FaceId f : m.faces()) CHECK(face_area(m, f) > 0.0);
 }
 
-TEST_CASE("triangulate: a face visiting a vertex twice; 2-gons stay") {
+TEST_CASE("triangulate: faces visiting a vertex twice or three times; 2-gons stay") {
   // The spoke's face has 6 corners, the spoke's end between two corners of the same vertex: 3 diagonals.
   Mesh m = cube_with_spoke(FaceId(1));
   apply_operation(m, "triangulate", {{"faces", "1"}});
   test::require_valid(m);
   CHECK(counts(m) == Counts{9, 16, 9});
+  // Two spokes from the same corner of the cube's top face: 4 5 7 6 4 x 4 y, vertex 4 three times. V 10,
+  // E 14; 8 corners, 5 diagonals, none from 4 to itself.
+  Mesh twice = test::cube();
+  const CornerId at4 = twice.first_corner(FaceId(1));
+  REQUIRE(twice.vertex(at4) == VertexId(4));
+  twice.insert_edge(at4, twice.corner(twice.create_vertex({-0.5, -0.8, 1})));
+  twice.insert_edge(at4, twice.corner(twice.create_vertex({-0.8, -0.5, 1})));
+  REQUIRE(twice.size(FaceId(1)) == 8);
+  apply_operation(twice, "triangulate", {{"faces", "1"}});
+  test::require_valid(twice);
+  CHECK(counts(twice) == Counts{10, 19, 11});
   Mesh g = two_gons();
   apply_operation(g, "triangulate");
   CHECK(g == two_gons());

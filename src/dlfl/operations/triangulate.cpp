@@ -9,6 +9,7 @@
 #include <glm/vec2.hpp>
 #include <limits>
 #include <string>
+#include <utility>
 
 #include <dlfl/errors.h>
 #include <dlfl/geometry.h>
@@ -59,6 +60,13 @@ class PlanarPolygon {
   // The diagonal between i's neighbours exists (no self-loop) and lies inside the polygon.
   bool cuttable(std::uint32_t i) const { return vertex[prev[i]] != vertex[next[i]]; }
 
+  // How many of i's two neighbours could still be cut off once i is (both, when a triangle is left).
+  int neighbours_left_cuttable(std::uint32_t i) const {
+    if (remaining <= 4) return 2;
+    const std::uint32_t a = prev[i], b = next[i];
+    return int(vertex[prev[a]] != vertex[b]) + int(vertex[a] != vertex[next[b]]);
+  }
+
   bool is_ear(std::uint32_t i) const {
     if (!cuttable(i) || turn(i) <= 0.0) return false;
     const std::uint32_t a = prev[i], b = next[i];
@@ -84,25 +92,37 @@ class PlanarPolygon {
   }
 };
 
-// The node to cut off next, or `none`: an ear if there is one, else the most convex cuttable corner.
+// The node to cut off next, or `none`: an ear if there is one, else the most convex cuttable corner; among
+// those, one that leaves its neighbours cuttable where it can, since a face that visits a vertex more than
+// once can otherwise be left with corners that no diagonal can cut off (a, b, a, b).
 std::uint32_t next_tip(const PlanarPolygon& poly, std::vector<char>& ear, std::uint32_t from) {
   for (int pass = 0; pass < 2; ++pass) {
+    std::uint32_t best = none;
+    int best_left = -1;
     std::uint32_t j = from;
     for (std::uint32_t k = 0; k < poly.remaining; ++k, j = poly.next[j]) {
-      if (ear[j]) return j;
+      if (!ear[j]) continue;
+      const int left = poly.neighbours_left_cuttable(j);
+      if (left == 2) return j;
+      if (left > best_left) {
+        best = j;
+        best_left = left;
+      }
     }
+    if (best != none) return best;
     if (pass == 1) break;
     // Cutting an ear can free a corner away from it (its neighbours' flags are the only ones kept up to
     // date), so look again with every flag fresh before giving up on ears.
     for (std::uint32_t k = 0; k < poly.remaining; ++k, j = poly.next[j]) ear[j] = poly.is_ear(j);
   }
   std::uint32_t best = none;
-  double best_turn = -std::numeric_limits<double>::infinity();
+  std::pair<int, double> best_rank(-1, -std::numeric_limits<double>::infinity());
   std::uint32_t j = from;
   for (std::uint32_t k = 0; k < poly.remaining; ++k, j = poly.next[j]) {
-    if (poly.cuttable(j) && poly.turn(j) > best_turn) {
+    const std::pair<int, double> rank(poly.neighbours_left_cuttable(j), poly.turn(j));
+    if (poly.cuttable(j) && rank > best_rank) {
       best = j;
-      best_turn = poly.turn(j);
+      best_rank = rank;
     }
   }
   return best;

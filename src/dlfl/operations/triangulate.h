@@ -22,8 +22,10 @@ struct TriangulateResult {
 /// cut off when it is convex there, its two neighbours are different vertices, and no other corner of the
 /// face lies in the triangle. A planar simple polygon, convex or not, so becomes triangles that all face the
 /// way it faces and whose areas sum to its area. A face with no such ear (not planar, self-overlapping in its
-/// plane, degenerate) has its most convex corner cut off instead; one whose every corner has the same vertex
-/// on both sides (which no diagonal can cut without a self-loop) keeps what is left. O(n^2) per face.
+/// plane, degenerate) has its most convex corner cut off instead. A face that visits a vertex more than once
+/// has the cuts that leave their neighbours cuttable made first; one left with corners that all have the same
+/// vertex on both sides (a, b, a, b: no diagonal without a self-loop) keeps that remainder, and so may get
+/// fewer than n - 3 diagonals (a, b, a, b, a, b has no triangulation at all). O(n^2) per face.
 ///
 /// Throws ParameterError naming "faces" (mesh unchanged) for a removed face or a face listed twice.
 TriangulateResult triangulate(Transaction& tx, std::span<const FaceId> faces);
