@@ -24,6 +24,12 @@ std::vector<OperationSpec> flip_edge_operation_specs();       // flip_edge.cpp
 std::vector<OperationSpec> make_hole_operation_specs();       // make_hole.cpp
 std::vector<OperationSpec> fill_hole_operation_specs();       // fill_hole.cpp
 
+std::vector<OperationSpec> stellate_face_operation_specs();        // stellate_face.cpp
+std::vector<OperationSpec> subdivide_face_operation_specs();       // subdivide_face.cpp
+std::vector<OperationSpec> triangulate_operation_specs();          // triangulate.cpp
+std::vector<OperationSpec> reverse_orientation_operation_specs();  // reverse_orientation.cpp
+std::vector<OperationSpec> transform_operation_specs();            // transform.cpp
+
 // Handles and connections (docs/modeling.md)
 
 // Extrusions (docs/modeling.md)
@@ -45,6 +51,12 @@ inline constexpr std::array operation_files = {
     &flip_edge_operation_specs,
     &make_hole_operation_specs,
     &fill_hole_operation_specs,
+
+    &stellate_face_operation_specs,
+    &subdivide_face_operation_specs,
+    &triangulate_operation_specs,
+    &reverse_orientation_operation_specs,
+    &transform_operation_specs,
 
     // Handles and connections
 
