@@ -19,6 +19,8 @@ std::vector<OperationSpec> history_operation_specs();     // history_operations.
 // Local editing (docs/modeling.md)
 
 // Handles and connections (docs/modeling.md)
+std::vector<OperationSpec> connect_edges_operation_specs();  // connect_edges.cpp
+std::vector<OperationSpec> connect_faces_operation_specs();  // connect_faces.cpp
 
 // Extrusions (docs/modeling.md)
 
@@ -35,6 +37,8 @@ inline constexpr std::array operation_files = {
     // Local editing
 
     // Handles and connections
+    &connect_edges_operation_specs,
+    &connect_faces_operation_specs,
 
     // Extrusions
 };
