@@ -278,6 +278,18 @@ TEST_CASE("connect_edges: refusals name the corner and leave the mesh as it was"
   CHECK(copy == m);
 }
 
+TEST_CASE("connect_edges: two edges leaving one vertex make a quad that visits it twice") {
+  const Mesh m = test::cube();
+  // Top 4 5 7 6: the edge 4 -> 5; face x = -1 (0 4 6 2): the edge 4 -> 6. The quad c d a b is 4 6 4 5.
+  const Run r = checked(m, "connect_edges",
+                        {{"corner1", corner_of(m, 4, 1)}, {"corner2", corner_of(m, 4, 4)}}, {0, 2, 0}, false);
+  const FaceId quad = r.out.get("face").as_handle<FaceId>();
+  const std::vector<std::uint32_t> around = face_vertices(r.mesh, quad);
+  CHECK(around.size() == 4);
+  CHECK(std::count(around.begin(), around.end(), 4u) == 2);
+  CHECK(genera(r.mesh) == std::vector<long>{1});
+}
+
 // ---- connect_faces: counts
 // ---------------------------------------------------------------------------------
 
@@ -742,6 +754,8 @@ TEST_CASE("connect_faces: refused when every pairing of the corners joins a vert
   REQUIRE(m.size(fm.back) == 2);
   check_refusal(m, "connect_faces", {{"face1", f}, {"face2", fm.back}}, "face2", "every pairing");
   check_refusal(m, "connect_faces", {{"face1", f}, {"face2", fm.back}, {"corner1", front[1]}}, "corner1",
+                "every tube from it");
+  check_refusal(m, "connect_faces", {{"face1", f}, {"face2", fm.back}, {"corner2", back[0]}}, "corner2",
                 "every tube from it");
 }
 
