@@ -31,6 +31,8 @@ std::vector<OperationSpec> reverse_orientation_operation_specs();  // reverse_or
 std::vector<OperationSpec> transform_operation_specs();            // transform.cpp
 
 // Handles and connections (docs/modeling.md)
+std::vector<OperationSpec> connect_edges_operation_specs();  // connect_edges.cpp
+std::vector<OperationSpec> connect_faces_operation_specs();  // connect_faces.cpp
 
 // Extrusions (docs/modeling.md)
 
@@ -59,6 +61,8 @@ inline constexpr std::array operation_files = {
     &transform_operation_specs,
 
     // Handles and connections
+    &connect_edges_operation_specs,
+    &connect_faces_operation_specs,
 
     // Extrusions
 };
