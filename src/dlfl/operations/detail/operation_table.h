@@ -21,6 +21,8 @@ std::vector<OperationSpec> history_operation_specs();     // history_operations.
 // Handles and connections (docs/modeling.md)
 
 // Extrusions (docs/modeling.md)
+std::vector<OperationSpec> extrude_face_operation_specs();  // extrude_face.cpp
+std::vector<OperationSpec> inset_face_operation_specs();    // inset_face.cpp
 
 // One entry per line, grouped as the declarations above (kept out of clang-format so that adding one
 // entry touches one line).
@@ -37,6 +39,8 @@ inline constexpr std::array operation_files = {
     // Handles and connections
 
     // Extrusions
+    &extrude_face_operation_specs,
+    &inset_face_operation_specs,
 };
 // clang-format on
 
