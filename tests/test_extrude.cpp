@@ -234,7 +234,17 @@ TEST_CASE("extrude_face: every style's counts and new faces on faces of 3 to 8 s
         const bool cone = style == "stellate" || style == "double-stellate" || style == "dome";
         CHECK(out.has("face") == !cone);
         CHECK(out.has("vertex") == cone);
-        if (!cone) CHECK(after.size(out.get("face").as_handle<FaceId>()) == n);
+        // The moved face's centroid, or the apex, ends on the axis, 1 (the default distance) along the
+        // normal; the moved face is parallel to the face (the faces are planar) and turns the same way.
+        const glm::dvec3 c = face_centroid(mesh, f), normal = face_normal(mesh, f);
+        if (cone) {
+          check_near(after.position(out.get("vertex").as_handle<VertexId>()), c + normal);
+        } else {
+          const FaceId end = out.get("face").as_handle<FaceId>();
+          CHECK(after.size(end) == n);
+          check_near(face_centroid(after, end), c + normal);
+          CHECK(glm::dot(face_normal(after, end), normal) == doctest::Approx(1.0));
+        }
       }
     }
   }
@@ -410,6 +420,29 @@ TEST_CASE("extrude_face: a given direction is normalised and the face moves alon
       create_face_manifold(flat, std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}, {2, 0, 0}});
   apply_and_check(flat, "extrude_face", {{"face", fm.front}, {"direction", glm::dvec3(0, 0, 1)}},
                   expected_delta("cubical", 3, 1));
+}
+
+TEST_CASE("extrude_face: a 2-gon and a face that visits a vertex twice extrude as any face of their size") {
+  // A 2-gon (a face manifold of two points) has no normal, so it goes along a given direction. A spike (an
+  // edge to a new vertex q inside the cube's top face, which then runs ..., p, q, p, ...) makes a 6-gon that
+  // visits p twice and lies on both sides of the spike's edge.
+  Mesh two_gon;
+  const FaceManifold fm = create_face_manifold(two_gon, std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}});
+  Mesh spiked = build_mesh(test::cube_soup());
+  const FaceId top = cube_top(spiked);
+  const VertexId q = spiked.create_vertex({0.2, 0.1, 1});
+  spiked.insert_edge(spiked.first_corner(top), spiked.corner(q));
+  REQUIRE(spiked.size(top) == 6);
+  for (const std::string& style : all_styles) {
+    CAPTURE(style);
+    const Params along = {{"face", fm.front}, {"style", style}, {"direction", glm::dvec3(0, 0, 1)}};
+    apply_and_check(two_gon, "extrude_face", along, expected_delta(style, 2, 1));
+    Mesh m = two_gon;
+    apply_operation(m, "extrude_face", along);
+    CHECK(shapes_around_new_vertices(m, two_gon.vertex_capacity()) == expected_shapes(style, 2, 1));
+    apply_and_check(spiked, "extrude_face", {{"face", top}, {"style", style}}, expected_delta(style, 6, 1));
+  }
+  apply_and_check(spiked, "inset_face", {{"face", top}, {"depth", 0.5}}, {6, 12, 6});
 }
 
 TEST_CASE("extrude_face: a list of faces extrudes each on its own, as one operation") {

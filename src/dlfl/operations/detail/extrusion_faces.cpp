@@ -6,11 +6,11 @@
 namespace dlfl::detail {
 
 ParamSpec face_param(std::string doc) {
-  return param("face", ParamType::face, std::move(doc)).optional("none: give face or faces");
+  return param("face", ParamType::face, std::move(doc)).optional("exactly one of face and faces");
 }
 
 ParamSpec faces_param(std::string doc) {
-  return param("faces", ParamType::faces, std::move(doc)).optional("none: give face or faces");
+  return param("faces", ParamType::faces, std::move(doc)).optional("exactly one of face and faces");
 }
 
 void refuse(std::string_view op, std::string_view parameter, const std::string& what) {
