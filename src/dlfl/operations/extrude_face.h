@@ -18,25 +18,25 @@ namespace dlfl {
 
 /// What an extrusion builds on a face of n sides, with s segments (the change of V, E and F):
 enum class ExtrudeStyle : std::uint8_t {
-  /// n quads per segment joining the moved face to where it was: V+n·s, E+2n·s, F+n·s.
+  /// n quads per segment joining the moved face to where it was: V+n*s, E+2n*s, F+n*s.
   cubical,
   /// As cubical, the moved face first shrunk by Doo-Sabin's mask for the face (half size for a regular
-  /// polygon): V+n·s, E+2n·s, F+n·s.
+  /// polygon): V+n*s, E+2n*s, F+n*s.
   doo_sabin,
   /// An antiprism band per segment: the new corners sit over the edges of the old face (for a regular
-  /// polygon, the same polygon turned by pi/n), 2n triangles join them: V+n·s, E+3n·s, F+2n·s. On a regular
-  /// triangle at distance sqrt(2/3)·edge, a regular octahedron.
+  /// polygon, the same polygon turned by pi/n), 2n triangles join them: V+n*s, E+3n*s, F+2n*s. On a regular
+  /// triangle at distance sqrt(2/3)*edge, a regular octahedron.
   octahedral,
   /// A cone: one apex over the centroid joined to every corner: V+1, E+n, F+n-1 (segments 1).
   stellate,
   /// The cone, each of its triangles stellated again at its centroid in the plane of the face (the first
   /// apex then raised): V+n+1, E+4n, F+3n-1 (segments 1).
   double_stellate,
-  /// Per segment: three new rings, 2n pentagons and the moved face: V+3n·s, E+5n·s, F+2n·s. On a regular
-  /// pentagon at distance sqrt(5/2 + 11 sqrt(5)/10)·edge, a regular dodecahedron.
+  /// Per segment: three new rings, 2n pentagons and the moved face: V+3n*s, E+5n*s, F+2n*s. On a regular
+  /// pentagon at distance sqrt(5/2 + 11 sqrt(5)/10)*edge, a regular dodecahedron.
   dodecahedral,
   /// Per segment: n triangles at the old edges, n pentagons each stellated into 5 triangles, the moved face:
-  /// V+3n·s, E+9n·s, F+6n·s. On a regular triangle at distance phi^2/sqrt(3)·edge, a regular icosahedron.
+  /// V+3n*s, E+9n*s, F+6n*s. On a regular triangle at distance phi^2/sqrt(3)*edge, a regular icosahedron.
   icosahedral,
   /// Five Doo-Sabin rings of falling height and width, then a cone: V+5n+1, E+11n, F+6n-1 (segments 1).
   dome,
@@ -72,7 +72,7 @@ struct ExtrudeFaceResult {
 };
 
 /// Extrudes `face` (see ExtrudeStyle for the counts). Checks everything first (`check_extrude_faces`) and
-/// throws ParameterError naming "face" or the option at fault, with the mesh unchanged. O(n·segments).
+/// throws ParameterError naming "face" or the option at fault, with the mesh unchanged. O(n*segments).
 ExtrudeFaceResult extrude_face(Transaction& tx, FaceId face, const ExtrudeFaceOptions& options = {});
 
 /// Extrudes each face on its own, as extrude_face would one after the other (the counts add up); refusals
