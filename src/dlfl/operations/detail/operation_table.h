@@ -35,6 +35,8 @@ std::vector<OperationSpec> connect_edges_operation_specs();  // connect_edges.cp
 std::vector<OperationSpec> connect_faces_operation_specs();  // connect_faces.cpp
 
 // Extrusions (docs/modeling.md)
+std::vector<OperationSpec> extrude_face_operation_specs();  // extrude_face.cpp
+std::vector<OperationSpec> inset_face_operation_specs();    // inset_face.cpp
 
 // One entry per line, grouped as the declarations above (kept out of clang-format so that adding one
 // entry touches one line).
@@ -65,6 +67,8 @@ inline constexpr std::array operation_files = {
     &connect_faces_operation_specs,
 
     // Extrusions
+    &extrude_face_operation_specs,
+    &inset_face_operation_specs,
 };
 // clang-format on
 
