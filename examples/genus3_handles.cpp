@@ -5,7 +5,9 @@
 // Usage: example_genus3_handles [DATA_DIR] [OUTPUT_DIR]
 #include <dlfl/dlfl.h>
 
+#include <cmath>
 #include <cstdio>
+#include <glm/geometric.hpp>
 #include <string>
 
 namespace {

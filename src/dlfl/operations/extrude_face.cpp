@@ -254,34 +254,36 @@ std::string shown(const glm::dvec3& p) {
 void check_options(const ExtrudeFaceOptions& o) {
   const auto not_finite = [](double x) { return !std::isfinite(x); };
   if (not_finite(o.distance))
-    detail::refuse(op_name, "distance", " = " + format_number(o.distance) + " is not finite");
+    detail::refuse_worded(op_name, "distance", " = " + format_number(o.distance) + " is not finite");
   if (not_finite(o.rotate_degrees))
-    detail::refuse(op_name, "rotate_degrees", " = " + format_number(o.rotate_degrees) + " is not finite");
+    detail::refuse_worded(op_name, "rotate_degrees",
+                          " = " + format_number(o.rotate_degrees) + " is not finite");
   if (not_finite(o.scale) || !(o.scale > 0.0))
-    detail::refuse(op_name, "scale", " = " + format_number(o.scale) + " is outside (0, inf)");
+    detail::refuse_worded(op_name, "scale", " = " + format_number(o.scale) + " is outside (0, inf)");
   if (o.segments < 1 || o.segments > max_segments) {
-    detail::refuse(
+    detail::refuse_worded(
         op_name, "segments",
         " = " + std::to_string(o.segments) + " is outside [1, " + std::to_string(max_segments) + "]");
   }
   const std::string style(to_string(o.style));
   if (ends_in_cone(o.style) && o.segments != 1) {
-    detail::refuse(
+    detail::refuse_worded(
         op_name, "segments",
         " = " + std::to_string(o.segments) + ": style " + style + " ends in a cone, so it takes 1");
   }
   if (moves_a_point(o.style) && o.rotate_degrees != 0.0) {
-    detail::refuse(
+    detail::refuse_worded(
         op_name, "rotate_degrees",
         " = " + format_number(o.rotate_degrees) + ": style " + style + " has no face to turn, so it takes 0");
   }
   if (moves_a_point(o.style) && o.scale != 1.0) {
-    detail::refuse(
+    detail::refuse_worded(
         op_name, "scale",
         " = " + format_number(o.scale) + ": style " + style + " has no face to scale, so it takes 1");
   }
   if (o.direction && !unit(*o.direction)) {
-    detail::refuse(op_name, "direction", " = " + shown(*o.direction) + " gives no direction (a zero vector)");
+    detail::refuse_worded(op_name, "direction",
+                          " = " + shown(*o.direction) + " gives no direction (a zero vector)");
   }
 }
 
@@ -301,8 +303,9 @@ std::vector<FacePlan> planned(const Mesh& mesh, std::span<const FaceId> faces, c
     const std::optional<glm::dvec3> direction =
         o.direction ? unit(*o.direction) : unit(newell_vector(mesh, f));
     if (!direction) {
-      detail::refuse(op_name, parameter,
-                     ": " + to_string(f) + " has no normal (its Newell vector is zero); give a direction");
+      detail::refuse_worded(
+          op_name, parameter,
+          ": " + to_string(f) + " has no normal (its Newell vector is zero); give a direction");
     }
     std::vector<glm::dvec3> ring;
     for (VertexId v : vertices(mesh, f)) ring.push_back(mesh.position(v));
@@ -316,7 +319,7 @@ std::vector<FacePlan> planned(const Mesh& mesh, std::span<const FaceId> faces, c
       const std::string name = !finite(plan_of(ring, *direction, unmoved))     ? std::string(parameter)
                                : finite(plan_of(ring, *direction, not_raised)) ? "distance"
                                                                                : "scale";
-      detail::refuse(op_name, name, ": the new positions on " + to_string(f) + " would not be finite");
+      detail::refuse_worded(op_name, name, ": the new positions on " + to_string(f) + " would not be finite");
     }
     out.push_back({f, std::move(plan)});
   }
@@ -375,7 +378,7 @@ ExtrudeStyle style_named(const std::string& name) {
   for (const auto& s : style_names) {
     if (s.name == name) return s.style;
   }
-  detail::refuse(op_name, "style", " = '" + name + "' is not a style");
+  detail::refuse_worded(op_name, "style", " = '" + name + "' is not a style");
 }
 
 ExtrudeFaceOptions options_of(const Params& p) {

@@ -41,22 +41,23 @@ struct FaceCopy {
 std::vector<FaceCopy> planned(const Mesh& mesh, std::span<const FaceId> faces, const InsetFaceOptions& o,
                               std::string_view parameter) {
   if (!std::isfinite(o.amount) || !(o.amount > 0.0 && o.amount < 1.0))
-    detail::refuse(op_name, "amount", " = " + format_number(o.amount) + " is outside (0, 1)");
+    detail::refuse_worded(op_name, "amount", " = " + format_number(o.amount) + " is outside (0, 1)");
   if (!std::isfinite(o.depth))
-    detail::refuse(op_name, "depth", " = " + format_number(o.depth) + " is not finite");
+    detail::refuse_worded(op_name, "depth", " = " + format_number(o.depth) + " is not finite");
   detail::check_surface_faces(op_name, mesh, faces, parameter);
   std::vector<FaceCopy> out;
   out.reserve(faces.size());
   for (FaceId f : faces) {
     if (o.depth != 0.0 && face_normal(mesh, f) == glm::dvec3(0.0)) {
-      detail::refuse(op_name, parameter,
-                     ": " + to_string(f) + " has no normal (its Newell vector is zero), so depth must be 0");
+      detail::refuse_worded(
+          op_name, parameter,
+          ": " + to_string(f) + " has no normal (its Newell vector is zero), so depth must be 0");
     }
     std::vector<glm::dvec3> positions = copy_of(mesh, f, o);
     if (positions.empty()) {
       const bool face_at_fault = copy_of(mesh, f, {o.amount, 0.0}).empty();
-      detail::refuse(op_name, face_at_fault ? parameter : "depth",
-                     ": the copy of " + to_string(f) + " would not have finite positions");
+      detail::refuse_worded(op_name, face_at_fault ? parameter : "depth",
+                            ": the copy of " + to_string(f) + " would not have finite positions");
     }
     out.push_back({f, std::move(positions)});
   }

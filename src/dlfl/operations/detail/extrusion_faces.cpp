@@ -13,11 +13,6 @@ ParamSpec faces_param(std::string doc) {
   return param("faces", ParamType::faces, std::move(doc)).optional("exactly one of face and faces");
 }
 
-void refuse(std::string_view op, std::string_view parameter, const std::string& what) {
-  throw ParameterError(std::string(op) + ": parameter " + std::string(parameter) + what,
-                       std::string(parameter));
-}
-
 FaceSelection selected_faces(std::string_view op, const Params& params) {
   const bool one = params.has("face"), many = params.has("faces");
   if (one == many) {
@@ -31,19 +26,20 @@ FaceSelection selected_faces(std::string_view op, const Params& params) {
 
 void check_surface_faces(std::string_view op, const Mesh& mesh, std::span<const FaceId> faces,
                          std::string_view parameter) {
-  if (faces.empty()) refuse(op, parameter, " is empty: it needs at least one face");
+  if (faces.empty()) refuse_worded(op, parameter, " is empty: it needs at least one face");
   for (FaceId f : faces) {
     if (!mesh.is_alive(f))
-      refuse(op, parameter, ": " + to_string(f) + " does not exist (removed or never created)");
+      refuse_worded(op, parameter, ": " + to_string(f) + " does not exist (removed or never created)");
     if (mesh.is_hole(f))
-      refuse(op, parameter, ": " + to_string(f) + " is a hole face (a boundary loop), not a surface face");
+      refuse_worded(op, parameter,
+                    ": " + to_string(f) + " is a hole face (a boundary loop), not a surface face");
     if (mesh.size(f) < 2)
-      refuse(op, parameter, ": " + to_string(f) + " is a point sphere's face (one corner, no edge)");
+      refuse_worded(op, parameter, ": " + to_string(f) + " is a point sphere's face (one corner, no edge)");
   }
   std::vector<FaceId> sorted(faces.begin(), faces.end());
   std::sort(sorted.begin(), sorted.end());
   const auto twice = std::adjacent_find(sorted.begin(), sorted.end());
-  if (twice != sorted.end()) refuse(op, parameter, ": " + to_string(*twice) + " is listed twice");
+  if (twice != sorted.end()) refuse_worded(op, parameter, ": " + to_string(*twice) + " is listed twice");
 }
 
 }  // namespace dlfl::detail

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <dlfl/mesh.h>
+#include <dlfl/operations/detail/refusal.h>
 #include <dlfl/parameters.h>
 
 namespace dlfl::detail {
@@ -31,8 +32,5 @@ FaceSelection selected_faces(std::string_view op, const Params& params);
 /// hole face, a point sphere's face. O(k log k) for k faces.
 void check_surface_faces(std::string_view op, const Mesh& mesh, std::span<const FaceId> faces,
                          std::string_view parameter);
-
-/// Throws ParameterError("OP: parameter NAME" + what, NAME); `what` starts with ": " or " ".
-[[noreturn]] void refuse(std::string_view op, std::string_view parameter, const std::string& what);
 
 }  // namespace dlfl::detail

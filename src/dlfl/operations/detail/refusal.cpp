@@ -7,8 +7,11 @@
 namespace dlfl::detail {
 
 void refuse(std::string_view op, std::string_view param, const std::string& why) {
-  throw ParameterError(std::string(op) + ": parameter " + std::string(param) + ": " + why,
-                       std::string(param));
+  refuse_worded(op, param, ": " + why);
+}
+
+void refuse_worded(std::string_view op, std::string_view param, const std::string& tail) {
+  throw ParameterError(std::string(op) + ": parameter " + std::string(param) + tail, std::string(param));
 }
 
 std::string count_of(std::size_t n, const char* noun) {

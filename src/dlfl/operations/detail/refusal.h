@@ -15,6 +15,9 @@ namespace dlfl::detail {
 
 /// Throws ParameterError("OP: parameter PARAM: WHY", PARAM).
 [[noreturn]] void refuse(std::string_view op, std::string_view param, const std::string& why);
+/// Throws ParameterError("OP: parameter PARAM" + TAIL, PARAM), for the wordings that go on otherwise than
+/// with a colon ("extrude_face: parameter distance = inf is not finite").
+[[noreturn]] void refuse_worded(std::string_view op, std::string_view param, const std::string& tail);
 
 /// Refuses `param` unless h is a live element of `mesh`.
 template <class H>
