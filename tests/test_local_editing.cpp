@@ -811,6 +811,29 @@ TEST_CASE(
   }
 }
 
+TEST_CASE("flip_edge: a backward flip undoes a forward one on faces of any sizes") {
+  // Two quads (cube), a quad and a pentagon (pentagonal prism), two triangles (octahedron): forward then
+  // backward must give an edge between the same two vertices, with the two faces' vertex cycles as before.
+  for (const auto& [name, soup] :
+       {std::pair{"cube", test::cube_soup()}, std::pair{"prism", test::prism_soup(5)},
+        std::pair{"octahedron", test::octahedron_soup()}}) {
+    CAPTURE(name);
+    const Mesh start = mesh_of(soup);
+    for (EdgeId e : start.edges()) {
+      Mesh m = start;
+      const VertexId a = m.from(e), b = m.to(e);
+      const std::size_t size0 = m.size(m.face(e, 0)), size1 = m.size(m.face(e, 1));
+      const EdgeId forward = apply_exactly(m, "flip_edge", {{"edge", e}}).handle<EdgeId>("edge");
+      const EdgeId back = apply_exactly(m, "flip_edge", {{"edge", forward}, {"direction", "backward"}})
+                              .handle<EdgeId>("edge");
+      CHECK(((m.from(back) == a && m.to(back) == b) || (m.from(back) == b && m.to(back) == a)));
+      CHECK(counts(m) == counts(start));
+      const std::size_t s0 = m.size(m.face(back, 0)), s1 = m.size(m.face(back, 1));
+      CHECK(((s0 == size0 && s1 == size1) || (s0 == size1 && s1 == size0)));
+    }
+  }
+}
+
 TEST_CASE("flip_edge: counts on every modeling mesh, where it applies") {
   // Refused by hand: the tetrahedron's edges (x and y are always joined already) and the grid's boundary
   // edges. Everywhere else the two new ends are neither joined nor on the other face, and every vertex has at

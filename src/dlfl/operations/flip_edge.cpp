@@ -13,9 +13,17 @@ constexpr const char* op_name = "flip_edge";
 
 [[noreturn]] void refuse(const std::string& why) { detail::refuse(op_name, "edge", why); }
 
+// The corners at the two new ends: in side 0's face and in side 1's. Forward: the corners after the edge's
+// far ends (a, b, x along side 0; b, a, y along side 1). Backward: the corners before its near ends.
+std::pair<CornerId, CornerId> new_end_corners(const Mesh& m, EdgeId e, FlipDirection direction) {
+  const CornerId s0 = m.corner(e, 0), s1 = m.corner(e, 1);
+  if (direction == FlipDirection::forward) return {m.next(m.next(s0)), m.next(m.next(s1))};
+  return {m.prev(s0), m.prev(s1)};
+}
+
 }  // namespace
 
-void check_flip_edge(const Mesh& m, EdgeId e) {
+void check_flip_edge(const Mesh& m, EdgeId e, FlipDirection direction) {
   detail::require_live(m, op_name, "edge", e);
   const CornerId s0 = m.corner(e, 0);
   const CornerId s1 = m.corner(e, 1);
@@ -32,8 +40,9 @@ void check_flip_edge(const Mesh& m, EdgeId e) {
              " sides; a flip needs faces of at least 3");
     }
   }
-  const VertexId x = m.vertex(m.next(m.next(s0)));  // the new end in f0
-  const VertexId y = m.vertex(m.next(m.next(s1)));  // the new end in f1
+  const auto [at_x, at_y] = new_end_corners(m, e, direction);
+  const VertexId x = m.vertex(at_x);  // the new end in f0
+  const VertexId y = m.vertex(at_y);  // the new end in f1
   if (x == y) refuse("the flipped edge would be a self-loop at " + to_string(x));
   for (VertexId end : {m.from(e), m.to(e)}) {
     if (m.valence(end) < 3) {
@@ -45,7 +54,8 @@ void check_flip_edge(const Mesh& m, EdgeId e) {
     refuse(to_string(x) + " and " + to_string(y) + " are already joined by " + to_string(joined) +
            "; the flipped edge would double it");
   }
-  // x joins the face that keeps f1's corners and y the one that keeps f0's: neither may be there already.
+  // Either way, x joins the face that keeps f1's corners and y the one that keeps f0's: neither may be there
+  // already.
   if (corner_in_face(m, y, f0).valid()) {
     refuse(to_string(y) + " is on " + to_string(f0) + " already; the face would pass through it twice");
   }
@@ -54,29 +64,37 @@ void check_flip_edge(const Mesh& m, EdgeId e) {
   }
 }
 
-EdgeId flip_edge(Transaction& tx, EdgeId e) {
+EdgeId flip_edge(Transaction& tx, EdgeId e, FlipDirection direction) {
   const Mesh& m = tx.mesh();
-  check_flip_edge(m, e);
-  const CornerId at_x = m.next(m.next(m.corner(e, 0)));
-  const CornerId at_y = m.next(m.next(m.corner(e, 1)));
+  check_flip_edge(m, e, direction);
+  const auto [at_x, at_y] = new_end_corners(m, e, direction);
   tx.delete_edge(e);                       // the two faces merge; at_x and at_y stay, in the merged face
   return tx.insert_edge(at_x, at_y).edge;  // and split again across x and y
 }
 
 namespace detail {
+namespace {
+FlipDirection direction_of(const Params& p) {
+  return p.text("direction") == "backward" ? FlipDirection::backward : FlipDirection::forward;
+}
+}  // namespace
 
 std::vector<OperationSpec> flip_edge_operation_specs() {
   return {edit_operation(
       "flip_edge",
       "turns an edge inside its two faces: each end moves one step forward along its face (two triangles "
       "a-b-x and b-a-y: ab becomes xy)",
-      {param("edge", ParamType::edge, "the edge to flip")}, "V+0, E+0, F+0",
+      {param("edge", ParamType::edge, "the edge to flip"),
+       param("direction", ParamType::text, "forward",
+             "forward: each end one step forward; backward: one step back (undoes a forward flip)")
+           .one_of({"forward", "backward"})},
+      "V+0, E+0, F+0",
       [](Transaction& tx, const Params& p) {
         Params out;
-        out["edge"] = flip_edge(tx, p.handle<EdgeId>("edge"));
+        out["edge"] = flip_edge(tx, p.handle<EdgeId>("edge"), direction_of(p));
         return out;
       },
-      [](const Mesh& m, Params& p) { check_flip_edge(m, p.handle<EdgeId>("edge")); })};
+      [](const Mesh& m, Params& p) { check_flip_edge(m, p.handle<EdgeId>("edge"), direction_of(p)); })};
 }
 
 }  // namespace detail

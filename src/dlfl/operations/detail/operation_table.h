@@ -38,6 +38,12 @@ std::vector<OperationSpec> connect_faces_operation_specs();  // connect_faces.cp
 std::vector<OperationSpec> extrude_face_operation_specs();  // extrude_face.cpp
 std::vector<OperationSpec> inset_face_operation_specs();    // inset_face.cpp
 
+// Shells and frames (docs/modeling.md)
+
+// Cutting (docs/modeling.md)
+
+// Cleanup and shape (docs/modeling.md)
+
 // One entry per line, grouped as the declarations above (kept out of clang-format so that adding one
 // entry touches one line).
 // clang-format off
@@ -69,6 +75,12 @@ inline constexpr std::array operation_files = {
     // Extrusions
     &extrude_face_operation_specs,
     &inset_face_operation_specs,
+
+    // Shells and frames
+
+    // Cutting
+
+    // Cleanup and shape
 };
 // clang-format on
 
