@@ -602,3 +602,79 @@ TEST_CASE("plane_cut refusals") {
         }).find("plane_cut: parameter point") == 0);
   CHECK(m == cube);
 }
+
+namespace {
+
+// A cube with a dangling edge at one corner and a 2-gon doubling an edge at another: elements the cuts
+// either refuse or cut.
+Mesh messy_cube() {
+  Mesh m = test::cube();
+  const VertexId corner = vertex_at(m, {1, 1, 1});
+  const VertexId p = m.create_vertex({2, 2, 2});
+  m.insert_edge(m.corner(p), m.corner(corner));
+  const VertexId far = vertex_at(m, {-1, -1, -1});
+  const CornerId c = m.corner(far);
+  m.insert_edge(c, m.next(c));
+  return m;
+}
+
+// The change the cut of one element makes by the closed form of docs/modeling.md, from the valences.
+Delta cap_delta(const Mesh& m, const std::string& op, std::uint32_t index) {
+  long holes = 0;
+  const auto around = [&](VertexId v) { holes = holes || touches_hole(m, v); };
+  if (op == "truncate_vertex") {
+    const VertexId v(index);
+    around(v);
+    const long k = m.valence(v);
+    return {k - 1, k, 1, holes};
+  }
+  if (op == "chamfer_edge") {
+    const EdgeId e(index);
+    around(m.from(e));
+    around(m.to(e));
+    const long a = m.valence(m.from(e)), b = m.valence(m.to(e));
+    return {a + b - 4, a + b - 3, 1, holes};
+  }
+  const FaceId f(index);
+  long sum = 0;
+  for (VertexId v : vertices(m, f)) {
+    around(v);
+    sum += long(m.valence(v)) - 2;
+  }
+  const long n = m.size(f);
+  return {sum - n, sum - n, 0, holes};
+}
+
+}  // namespace
+
+TEST_CASE(
+    "every vertex, edge and face of every modeling mesh and of a messy cube: cut, or refused unchanged") {
+  auto meshes = test::modeling_meshes();
+  meshes.push_back({"messy cube", messy_cube()});
+  for (const auto& [name, mesh] : meshes) {
+    CAPTURE(name);
+    for (const std::string op : {"truncate_vertex", "chamfer_edge", "cut_face"}) {
+      CAPTURE(op);
+      const std::uint32_t count = op == "truncate_vertex" ? mesh.vertex_capacity()
+                                  : op == "chamfer_edge"  ? mesh.edge_capacity()
+                                                          : mesh.face_capacity();
+      const std::string key = op == "truncate_vertex" ? "vertex" : op == "chamfer_edge" ? "edge" : "face";
+      for (std::uint32_t i = 0; i < count; ++i) {
+        CAPTURE(i);
+        Mesh m = mesh;
+        try {
+          apply_operation(m, op, {{key, std::int64_t(i)}, {"offset", 0.3}});
+        } catch (const ParameterError&) {
+          CHECK(m == mesh);
+          continue;
+        }
+        const Delta d = cap_delta(mesh, op, i);
+        CHECK(long(m.num_vertices()) == long(mesh.num_vertices()) + d.v);
+        CHECK(long(m.num_edges()) == long(mesh.num_edges()) + d.e);
+        CHECK(long(m.num_faces()) == long(mesh.num_faces()) + d.f);
+        CHECK(long(m.num_hole_faces()) == long(mesh.num_hole_faces()) + d.holes);
+        test::require_valid(m);
+      }
+    }
+  }
+}
