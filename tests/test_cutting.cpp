@@ -539,6 +539,30 @@ TEST_CASE("plane_cut: a non-convex face crossed four times is cut along the piec
         doctest::Approx(2 * 2 * 0.5));
 }
 
+TEST_CASE(
+    "plane_cut: a line along the notch of a U, touching it from inside, gives a section edge per prong") {
+  // The U of the test above, cut at y = 1 along the bottom of its notch: the notch's corners are reflex, so
+  // the line goes on inside the face past them; the section is (0, 1)-(1, 1) and (2, 1)-(3, 1), not one
+  // edge over the notch's side.
+  PolygonSoup u;
+  for (auto [x, y] :
+       std::vector<std::pair<double, double>>{{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})
+    u.positions.push_back({x, y, 0});
+  u.add_face({0, 1, 2, 3, 4, 5, 6, 7});
+  u.add_face({7, 6, 5, 4, 3, 2, 1, 0});
+  const Mesh pillow = build_mesh(u);
+  // Two edges split (x = 0 and x = 3), two section edges in each of the two faces.
+  apply_and_check(pillow, "plane_cut", plane({0, 1, 0}, {0, 1, 0}), {2, 2 + 4, 4});
+  const Mesh after = applied(pillow, "plane_cut", plane({0, 1, 0}, {0, 1, 0}));
+  for (EdgeId e : after.edges()) {
+    const glm::dvec3 a = after.position(after.from(e)), b = after.position(after.to(e));
+    if (std::abs(a.y - 1) > 1e-12 || std::abs(b.y - 1) > 1e-12) continue;
+    CHECK(std::abs(a.x - b.x) == doctest::Approx(1.0));  // the notch's side or a section edge, never 3 long
+  }
+  CHECK(surface_area(applied(pillow, "plane_cut", plane({0, 1, 0}, {0, 1, 0}, "below"))) ==
+        doctest::Approx(2 * 3.0));
+}
+
 TEST_CASE("plane_cut: random planes through random meshes: no edge crosses, loops, areas add up") {
   std::mt19937_64 random(20261202);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);

@@ -57,35 +57,54 @@ Distances distances(const Mesh& m, const Plane& plane) {
 
 int side_of(double dist, double tolerance) { return dist > tolerance ? 1 : (dist < -tolerance ? -1 : 0); }
 
-// The corners of face f where its boundary crosses the plane, in the order of the face; each is a corner on
-// the plane between a run from one side and a run from the other. Empty if f is not crossed.
-std::vector<CornerId> crossings(const Mesh& m, FaceId f, const std::vector<signed char>& side) {
-  std::vector<CornerId> cs;
-  for (CornerId c : m.corners(f)) cs.push_back(c);
-  const auto side_at = [&](CornerId c) { return int(side[m.vertex(c).index()]); };
-  const auto start = std::find_if(cs.begin(), cs.end(), [&](CornerId c) { return side_at(c) != 0; });
-  if (start == cs.end()) return {};
-  std::rotate(cs.begin(), start, cs.end());
+// A face's corners from one off the plane, with their sides.
+struct FaceWalk {
+  std::vector<CornerId> corners;
+  std::vector<int> sides;
+};
+
+FaceWalk walk_of(const Mesh& m, FaceId f, const std::vector<signed char>& side) {
+  FaceWalk w;
+  for (CornerId c : m.corners(f)) w.corners.push_back(c);
+  const auto start = std::find_if(w.corners.begin(), w.corners.end(),
+                                  [&](CornerId c) { return side[m.vertex(c).index()] != 0; });
+  if (start == w.corners.end()) return {};
+  std::rotate(w.corners.begin(), start, w.corners.end());
+  for (CornerId c : w.corners) w.sides.push_back(side[m.vertex(c).index()]);
+  return w;
+}
+
+// Where the face's boundary meets the plane's line so that a section edge starts there: indices into the
+// walk, in its order. A run of corners on the plane between corners on opposite sides is one crossing. With
+// `by_reflex_ends`, a run of more than one corner gives its reflex ends instead (where the face goes on
+// across the line: one for a run between opposite sides, none or two for a run between corners on one side,
+// as in the notch of a U), which is exact for a planar face; without, its first end (for a face that is not
+// planar enough for the turns to tell).
+std::vector<std::size_t> crossings(const Mesh& m, FaceId f, const FaceWalk& w, bool by_reflex_ends) {
   const glm::dvec3 normal = newell_vector(m, f);
-  // Of a run along the plane, the end where the face goes on across the line: the reflex one.
-  const auto turn = [&](CornerId c) {
+  const auto reflex = [&](CornerId c) {
     const glm::dvec3 p = m.position(m.vertex(c));
     return glm::dot(glm::cross(p - m.position(m.vertex(m.prev(c))), m.position(m.vertex(m.next(c))) - p),
-                    normal);
+                    normal) < 0.0;
   };
-  std::vector<CornerId> out;
-  int before = side_at(cs[0]);
-  std::size_t run_start = 0;  // 0: no run open (cs[0] is never on the plane)
-  for (std::size_t k = 1; k <= cs.size(); ++k) {
-    const CornerId c = cs[k % cs.size()];
-    const int s = side_at(c);
+  std::vector<std::size_t> out;
+  const std::size_t n = w.corners.size();
+  int before = w.sides[0];
+  std::size_t run_start = 0;  // 0: no run open (the walk starts off the plane)
+  for (std::size_t k = 1; k <= n; ++k) {
+    const int s = w.sides[k % n];
     if (s == 0) {
       if (run_start == 0) run_start = k;
       continue;
     }
-    if (run_start != 0 && s != before) {
-      const CornerId first = cs[run_start], last = cs[k - 1];
-      out.push_back(first == last || !(turn(last) < 0.0) || turn(first) < 0.0 ? first : last);
+    if (run_start != 0) {
+      const std::size_t first = run_start, last = k - 1;
+      if (first == last || !by_reflex_ends) {
+        if (s != before) out.push_back(first);
+      } else {
+        if (reflex(w.corners[first])) out.push_back(first);
+        if (reflex(w.corners[last])) out.push_back(last);
+      }
     }
     run_start = 0;
     before = s;
@@ -93,44 +112,68 @@ std::vector<CornerId> crossings(const Mesh& m, FaceId f, const std::vector<signe
   return out;
 }
 
-using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;
+using Pairs = std::vector<std::pair<std::size_t, std::size_t>>;  // indices into the walk
 
-// A pairing of the crossings (indices in the face's order) splits the face into parts on one side each if
-// every pair spans an odd number of steps and no two pairs interleave; no pair may join a vertex to itself.
-bool valid_pairing(const Mesh& m, const std::vector<CornerId>& xs, const Pairs& pairs) {
-  for (auto [a, b] : pairs) {
+// A pairing splits the face into parts on one side each: no two pairs interleave, no pair joins a vertex to
+// itself or two corners next to each other, and no part (the corners of a pair's span not inside a nested
+// pair, or those inside no pair) has corners on both sides. O(size of the face times pairs).
+bool valid_pairing(const Mesh& m, const FaceWalk& w, Pairs pairs) {
+  const std::size_t n = w.corners.size();
+  for (auto& [a, b] : pairs) {
     if (a > b) std::swap(a, b);
-    if ((b - a) % 2 == 0 || m.vertex(xs[a]) == m.vertex(xs[b])) return false;
+    if (m.vertex(w.corners[a]) == m.vertex(w.corners[b]) || b - a == 1 || (a == 0 && b == n - 1))
+      return false;
+  }
+  for (auto [a, b] : pairs) {
     for (auto [c, d] : pairs) {
-      if (c > d) std::swap(c, d);
       if (a < c && c < b && b < d) return false;
     }
   }
-  return true;
+  std::vector<int> seen(pairs.size() + 1, 0);  // per part: bit 1 above, bit 2 below
+  for (std::size_t k = 0; k < n; ++k) {
+    if (w.sides[k] == 0) continue;
+    std::size_t part = pairs.size(), span = n + 1;
+    for (std::size_t i = 0; i < pairs.size(); ++i) {
+      const auto [a, b] = pairs[i];
+      if (a < k && k < b && b - a < span) {
+        part = i;
+        span = b - a;
+      }
+    }
+    seen[part] |= w.sides[k] > 0 ? 1 : 2;
+  }
+  return std::none_of(seen.begin(), seen.end(), [](int s) { return s == 3; });
 }
 
-Pairs pairing(const Mesh& m, FaceId f, const std::vector<CornerId>& xs, const Plane& plane) {
-  const std::size_t k = xs.size();
-  std::vector<Pairs> candidates;
-  // Along the plane's line in the face: the pieces of the line inside the face join consecutive crossings.
+// The section edges of the face, as pairs of walk indices: the crossings paired along the plane's line in
+// the face (each piece of the line inside the face joins two consecutive crossings), else consecutive
+// crossings along the face, whichever splits the face into parts on one side each first.
+Pairs pairing(const Mesh& m, FaceId f, const FaceWalk& w, const Plane& plane) {
   const glm::dvec3 line = glm::cross(plane.normal, face_normal(m, f));
-  if (glm::dot(line, line) > 1e-24) {
-    std::vector<std::size_t> order(k);
-    for (std::size_t i = 0; i < k; ++i) order[i] = i;
-    std::sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return glm::dot(m.position(m.vertex(xs[a])), line) < glm::dot(m.position(m.vertex(xs[b])), line);
-    });
-    Pairs along;
-    for (std::size_t i = 0; i + 1 < k; i += 2) along.emplace_back(order[i], order[i + 1]);
-    candidates.push_back(along);
-  }
-  for (std::size_t shift = 0; shift < 2; ++shift) {
-    Pairs around;
-    for (std::size_t i = 0; i + 1 < k; i += 2) around.emplace_back((i + shift) % k, (i + 1 + shift) % k);
-    candidates.push_back(around);
-  }
-  for (const Pairs& p : candidates) {
-    if (valid_pairing(m, xs, p)) return p;
+  for (bool by_reflex_ends : {true, false}) {
+    const std::vector<std::size_t> xs = crossings(m, f, w, by_reflex_ends);
+    const std::size_t k = xs.size();
+    if (k < 2 || k % 2 != 0) continue;
+    std::vector<Pairs> candidates;
+    if (glm::dot(line, line) > 1e-24) {
+      std::vector<std::size_t> order = xs;
+      std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return glm::dot(m.position(m.vertex(w.corners[a])), line) <
+               glm::dot(m.position(m.vertex(w.corners[b])), line);
+      });
+      Pairs along;
+      for (std::size_t i = 0; i + 1 < k; i += 2) along.emplace_back(order[i], order[i + 1]);
+      candidates.push_back(along);
+    }
+    for (std::size_t shift = 0; shift < 2; ++shift) {
+      Pairs around;
+      for (std::size_t i = 0; i + 1 < k; i += 2)
+        around.emplace_back(xs[(i + shift) % k], xs[(i + 1 + shift) % k]);
+      candidates.push_back(around);
+    }
+    for (const Pairs& p : candidates) {
+      if (valid_pairing(m, w, p)) return p;
+    }
   }
   return {};
 }
@@ -176,10 +219,11 @@ PlaneCutResult plane_cut(Transaction& tx, const PlaneCutOptions& options) {
   for (std::uint32_t i = 0; i < faces_before; ++i) {
     const FaceId f(i);
     if (!m.is_alive(f) || m.is_hole(f) || m.size(f) < 2) continue;
-    const std::vector<CornerId> xs = crossings(m, f, side);
-    if (xs.size() < 2) continue;
-    for (const auto& [a, b] : pairing(m, f, xs, plane)) {
-      if (m.face(xs[a]) == m.face(xs[b])) result.edges.push_back(tx.insert_edge(xs[a], xs[b]).edge);
+    const FaceWalk w = walk_of(m, f, side);
+    if (w.corners.empty()) continue;
+    for (const auto& [a, b] : pairing(m, f, w, plane)) {
+      const CornerId ca = w.corners[a], cb = w.corners[b];
+      if (m.face(ca) == m.face(cb)) result.edges.push_back(tx.insert_edge(ca, cb).edge);
     }
   }
   // 3. The side that goes becomes holes.

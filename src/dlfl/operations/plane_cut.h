@@ -38,13 +38,13 @@ struct PlaneCutResult {
 };
 
 /// Cuts the mesh along the plane through `point` with normal `normal`. A vertex closer to the plane than
-/// 1e-12 times the largest distance of a vertex from `point` counts as on it: an edge crosses only if its
-/// ends are strictly on opposite sides, and a face is crossed where its boundary passes from one side to the
-/// other (through a vertex on the plane or a new one); a face that only touches the plane, or lies in it,
-/// is left as it is. Inside a non-convex face the crossings are paired along the plane's line, so that the
-/// section edges lie inside the face. Hole faces get no section edges. Refusals (ParameterError naming
-/// "point" or "normal", before any change): a point or normal not finite, a zero normal, distances that
-/// would not be finite.
+/// 1e-12 times the largest coordinate difference between a vertex and `point` counts as on it: an edge
+/// crosses only if its ends are strictly on opposite sides, and a face is crossed where its boundary passes
+/// from one side to the other (through a vertex on the plane or a new one); a face that only touches the
+/// plane, or lies in it, is left as it is. Inside a non-convex face the crossings are paired along the
+/// plane's line, so that the section edges lie inside the face. Hole faces get no section edges. Refusals
+/// (ParameterError naming "point" or "normal", before any change): a point or normal not finite, a zero
+/// normal, distances that would not be finite.
 PlaneCutResult plane_cut(Transaction& tx, const PlaneCutOptions& options);
 
 /// The checks of plane_cut.
