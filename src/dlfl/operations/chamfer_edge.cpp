@@ -5,6 +5,7 @@
 #include <vector>
 
 #include <dlfl/operations/detail/cap_cut.h>
+#include <dlfl/operations/detail/handle_selection.h>
 #include <dlfl/operations/detail/operation_table.h>
 
 namespace dlfl {
