@@ -514,6 +514,17 @@ TEST_CASE("plane_cut: the torus through its equator and through its axis gives t
   }
 }
 
+TEST_CASE(
+    "plane_cut: the open grid at x = 1.5: the hole's crossed edges split, no section edge in the hole") {
+  const Mesh grid = build_mesh(test::grid_soup(3, 2));
+  // The 3 edges from x = 1 to x = 2 split; the 2 quads between get a section edge each, the hole none.
+  apply_and_check(grid, "plane_cut", plane({1.5, 0, 0}, {1, 0, 0}), {3, 3 + 2, 2});
+  // Keeping x > 1.5: the 2 quads of the first column and the 2 left halves become holes; area 1.5 x 2.
+  apply_and_check(grid, "plane_cut", plane({1.5, 0, 0}, {1, 0, 0}, "above"), {3, 3 + 2, 2, 4});
+  CHECK(surface_area(applied(grid, "plane_cut", plane({1.5, 0, 0}, {1, 0, 0}, "above"))) ==
+        doctest::Approx(3.0));
+}
+
 TEST_CASE("plane_cut: a non-convex face crossed four times is cut along the pieces inside it") {
   // A U (two prongs at x in [0, 1] and [2, 3], the notch between) as a pillow of two faces.
   PolygonSoup u;
