@@ -41,6 +41,10 @@ std::vector<OperationSpec> inset_face_operation_specs();    // inset_face.cpp
 // Shells and frames (docs/modeling.md)
 
 // Cutting (docs/modeling.md)
+std::vector<OperationSpec> truncate_vertex_operation_specs();  // truncate_vertex.cpp
+std::vector<OperationSpec> chamfer_edge_operation_specs();     // chamfer_edge.cpp
+std::vector<OperationSpec> cut_face_operation_specs();         // cut_face.cpp
+std::vector<OperationSpec> plane_cut_operation_specs();        // plane_cut.cpp
 
 // Cleanup and shape (docs/modeling.md)
 
@@ -79,6 +83,10 @@ inline constexpr std::array operation_files = {
     // Shells and frames
 
     // Cutting
+    &truncate_vertex_operation_specs,
+    &chamfer_edge_operation_specs,
+    &cut_face_operation_specs,
+    &plane_cut_operation_specs,
 
     // Cleanup and shape
 };
