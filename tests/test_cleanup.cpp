@@ -347,6 +347,19 @@ TEST_CASE("remove_2gons: a 2-gon beside a hole merges into the surface face; pil
     }
   }
   CHECK(apply_and_check(holed, "remove_2gons", {}, {0, -1, -1}).out.integer("two_gons_removed") == 1);
+  // Both triangles of the collapsed tetrahedron made holes: each 2-gon has a hole across both its edges, a
+  // sliver between boundary loops: both stay.
+  Mesh slivers = build_mesh(test::tetrahedron_soup());
+  {
+    Transaction tx(slivers);
+    collapse_edge(tx, EdgeId(0));
+    tx.commit();
+  }
+  for (FaceId f : slivers.faces()) {
+    if (slivers.size(f) == 3) slivers.set_hole(f, true);
+  }
+  REQUIRE(slivers.num_hole_faces() == 2);
+  CHECK(apply_and_check(slivers, "remove_2gons", {}, {}).out.integer("two_gons_removed") == 0);
 }
 
 // ---- dissolve_coplanar ----------------------------------------------------------------------------------
