@@ -47,6 +47,12 @@ std::vector<OperationSpec> cut_face_operation_specs();         // cut_face.cpp
 std::vector<OperationSpec> plane_cut_operation_specs();        // plane_cut.cpp
 
 // Cleanup and shape (docs/modeling.md)
+std::vector<OperationSpec> dissolve_coplanar_operation_specs();  // dissolve_coplanar.cpp
+std::vector<OperationSpec> remove_2gons_operation_specs();       // remove_2gons.cpp
+std::vector<OperationSpec> remove_valence2_operation_specs();    // remove_valence2.cpp
+std::vector<OperationSpec> planarize_operation_specs();          // planarize.cpp
+std::vector<OperationSpec> smooth_operation_specs();             // smooth.cpp
+std::vector<OperationSpec> spheralize_operation_specs();         // spheralize.cpp
 
 // One entry per line, grouped as the declarations above (kept out of clang-format so that adding one
 // entry touches one line).
@@ -89,6 +95,12 @@ inline constexpr std::array operation_files = {
     &plane_cut_operation_specs,
 
     // Cleanup and shape
+    &dissolve_coplanar_operation_specs,
+    &remove_2gons_operation_specs,
+    &remove_valence2_operation_specs,
+    &planarize_operation_specs,
+    &smooth_operation_specs,
+    &spheralize_operation_specs,
 };
 // clang-format on
 
