@@ -269,6 +269,14 @@ TEST_CASE("rind: 2chi - 2k on every closed modeling mesh, k = 1 and 2") {
   }
 }
 
+TEST_CASE("rind: one face given as face") {
+  // The cube's face 0 (a quad): V 16, E 24 + 4, F 12 + 2; chi 2.
+  const Mesh cube = test::cube();
+  const Mesh after = apply_and_check(cube, "rind", {{"face", FaceId(0)}}, {16, 28, 14});
+  CHECK(euler_characteristic(after) == 2);
+  CHECK(components(after) == 1);
+}
+
 TEST_CASE("rind twice: the same rule on a rind") {
   const Mesh cube = test::cube();
   long sides = 0;
@@ -402,10 +410,10 @@ TEST_CASE("shells: refusals name their parameter and change nothing") {
   CHECK(refused_parameter(cube, "crust", {{"thickness", std::numeric_limits<double>::infinity()}}) ==
         "thickness");
   {
-    // A grid far below the origin, facing +z: its copy 1e308 further down would overflow.
+    // A quad far below the origin, facing +z: its copy 1.5e308 further down would overflow.
     PolygonSoup low = test::grid_soup(1, 1);
-    for (auto& p : low.positions) p.z = -1.5e308;
-    CHECK(refused_parameter(build_mesh(low), "crust", {{"thickness", 1e308}},
+    for (auto& p : low.positions) p.z = -0.8e308;
+    CHECK(refused_parameter(build_mesh(low), "crust", {{"thickness", 1.5e308}},
                             "would not have a finite position") == "thickness");
   }
   CHECK(refused_parameter(cube, "rind", {{"faces", std::vector<FaceId>{}}}, "is empty") == "faces");
@@ -414,12 +422,20 @@ TEST_CASE("shells: refusals name their parameter and change nothing") {
   CHECK(refused_parameter(cube, "rind", {{"faces", std::vector<FaceId>{FaceId(1)}}, {"thickness", 0.0}}) ==
         "thickness");
   CHECK(refused_parameter(cube, "rind", {{"faces", std::vector<FaceId>{FaceId(99)}}}) == "faces");
-  CHECK(refused_parameter(cube, "rind", {}) == "faces");
+  {
+    Editor ed;
+    ed.set_mesh(cube);
+    CHECK(test::error_message<ParameterError>([&] { ed.apply("rind", {}); }) ==
+          "rind: give exactly one of parameters face and faces (neither is given)");
+    CHECK(ed.mesh() == cube);
+  }
+  CHECK(refused_parameter(cube, "rind", {{"face", FaceId(99)}}) == "face");
   FaceId hole;
   for (FaceId f : grid.faces()) {
     if (grid.is_hole(f)) hole = f;
   }
   CHECK(refused_parameter(grid, "rind", {{"faces", std::vector<FaceId>{hole}}}, "is a hole face") == "faces");
+  CHECK(refused_parameter(grid, "rind", {{"face", hole}}, "is a hole face") == "face");
   Mesh with_sphere = cube;
   const VertexId lone = with_sphere.create_vertex({5, 5, 5});
   CHECK(refused_parameter(with_sphere, "rind",

@@ -11,21 +11,27 @@ namespace {
 
 constexpr std::string_view op_name = "rind";
 
-std::vector<glm::dvec3> planned(const Mesh& mesh, std::span<const FaceId> faces, const RindOptions& o) {
-  detail::check_surface_faces(op_name, mesh, faces, "faces");
+std::vector<glm::dvec3> planned(const Mesh& mesh, std::span<const FaceId> faces, const RindOptions& o,
+                                std::string_view parameter = "faces") {
+  detail::check_surface_faces(op_name, mesh, faces, parameter);
   return detail::inner_positions(mesh, op_name, "thickness", o.thickness);
 }
 
-}  // namespace
-
-std::vector<VertexId> rind(Transaction& tx, std::span<const FaceId> faces, const RindOptions& options) {
-  const std::vector<glm::dvec3> inner = planned(tx.mesh(), faces, options);
+std::vector<VertexId> rind_faces(Transaction& tx, std::span<const FaceId> faces, const RindOptions& options,
+                                 std::string_view parameter) {
+  const std::vector<glm::dvec3> inner = planned(tx.mesh(), faces, options, parameter);
   const detail::MirroredCopy copy = detail::add_shell(tx, inner, faces);
   std::vector<VertexId> out;
   for (VertexId v : copy.vertices) {
     if (v.valid()) out.push_back(v);
   }
   return out;
+}
+
+}  // namespace
+
+std::vector<VertexId> rind(Transaction& tx, std::span<const FaceId> faces, const RindOptions& options) {
+  return rind_faces(tx, faces, options, "faces");
 }
 
 void check_rind(const Mesh& mesh, std::span<const FaceId> faces, const RindOptions& options) {
@@ -39,15 +45,17 @@ std::vector<OperationSpec> rind_operation_specs() {
       "rind", "a crust with the given faces punched through to their inner twins by tubes of quads",
       {param("thickness", ParamType::number, 0.1, "how far the copy lies below, along the vertex normals")
            .range(0.0, std::numeric_limits<double>::infinity(), true, false),
-       param("faces", ParamType::faces, "the faces to punch through (at least one)")},
+       faces_param("the faces to punch through (at least one)"), face_param("one face to punch through")},
       "closed: V+V, E+E+sum n, F+F+sum (n-2) over the k faces: Euler characteristic 2chi-2k",
       [](Transaction& tx, const Params& p) {
+        const FaceSelection selection = selected_faces(op_name, p);
         Params out;
-        out["vertices"] = rind(tx, p.handles<FaceId>("faces"), {p.number("thickness")});
+        out["vertices"] = rind_faces(tx, selection.faces, {p.number("thickness")}, selection.parameter);
         return out;
       },
       [](const Mesh& mesh, Params& p) {
-        check_rind(mesh, p.handles<FaceId>("faces"), {p.number("thickness")});
+        const FaceSelection selection = selected_faces(op_name, p);
+        planned(mesh, selection.faces, {p.number("thickness")}, selection.parameter);
       })};
 }
 

@@ -24,7 +24,8 @@ struct RindOptions {
 /// thickness as crust refuses it. O(size), plus the size of a component per handle of it.
 std::vector<VertexId> rind(Transaction& tx, std::span<const FaceId> faces, const RindOptions& options = {});
 
-/// The checks of rind, without changing anything.
+/// The checks of rind, without changing anything. (The registered operation takes `faces` or, for one face,
+/// `face`; its refusals name the one given.)
 void check_rind(const Mesh& mesh, std::span<const FaceId> faces, const RindOptions& options);
 
 }  // namespace dlfl
