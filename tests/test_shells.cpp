@@ -91,8 +91,6 @@ struct Counts {
   long v, e, f;
 };
 
-Counts counts_of(const Mesh& m) { return {long(m.num_vertices()), long(m.num_edges()), long(m.num_faces())}; }
-
 // Applies `op` through an editor and checks the counts, the validator, exact undo and redo, and a log
 // written and replayed to the same mesh. Returns the mesh after.
 Mesh apply_and_check(const Mesh& start, const std::string& op, const Params& params, Counts expected,
