@@ -39,6 +39,10 @@ std::vector<OperationSpec> extrude_face_operation_specs();  // extrude_face.cpp
 std::vector<OperationSpec> inset_face_operation_specs();    // inset_face.cpp
 
 // Shells and frames (docs/modeling.md)
+std::vector<OperationSpec> crust_operation_specs();      // crust.cpp
+std::vector<OperationSpec> rind_operation_specs();       // rind.cpp
+std::vector<OperationSpec> wireframe_operation_specs();  // wireframe.cpp
+std::vector<OperationSpec> columns_operation_specs();    // columns.cpp
 
 // Cutting (docs/modeling.md)
 std::vector<OperationSpec> truncate_vertex_operation_specs();  // truncate_vertex.cpp
@@ -87,6 +91,10 @@ inline constexpr std::array operation_files = {
     &inset_face_operation_specs,
 
     // Shells and frames
+    &crust_operation_specs,
+    &rind_operation_specs,
+    &wireframe_operation_specs,
+    &columns_operation_specs,
 
     // Cutting
     &truncate_vertex_operation_specs,
