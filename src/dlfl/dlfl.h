@@ -40,8 +40,10 @@
 #include <dlfl/navigation.h>
 #include <dlfl/operations/chamfer_edge.h>
 #include <dlfl/operations/collapse_edge.h>
+#include <dlfl/operations/columns.h>
 #include <dlfl/operations/connect_edges.h>
 #include <dlfl/operations/connect_faces.h>
+#include <dlfl/operations/crust.h>
 #include <dlfl/operations/cut_face.h>
 #include <dlfl/operations/cut_result.h>
 #include <dlfl/operations/dissolve_coplanar.h>
@@ -58,6 +60,7 @@
 #include <dlfl/operations/remove_2gons.h>
 #include <dlfl/operations/remove_valence2.h>
 #include <dlfl/operations/reverse_orientation.h>
+#include <dlfl/operations/rind.h>
 #include <dlfl/operations/smooth.h>
 #include <dlfl/operations/spheralize.h>
 #include <dlfl/operations/splice_corners.h>
@@ -67,6 +70,7 @@
 #include <dlfl/operations/transform.h>
 #include <dlfl/operations/triangulate.h>
 #include <dlfl/operations/truncate_vertex.h>
+#include <dlfl/operations/wireframe.h>
 #include <dlfl/parameters.h>
 #include <dlfl/polygon_soup.h>
 #include <dlfl/schemes/catmull_clark.h>

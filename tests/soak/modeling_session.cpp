@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <map>
 #include <random>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -156,8 +157,11 @@ int main(int argc, char** argv) {
   std::map<std::string, long> applied_by_op;
   for (long i = 0; i < ops_count; ++i) {
     const OperationSpec& op = *ops[session.pick(static_cast<std::uint32_t>(ops.size()))];
-    // Schemes only on small meshes, so that the session stays quick; bigger meshes get undone instead.
-    if (op.name == "subdivide" && editor.mesh().num_corners() > 2000) {
+    // Schemes, and the operations that grow the whole mesh (shells and frames), only on small meshes, so that
+    // the session stays quick; bigger meshes get undone instead.
+    static const std::set<std::string> whole_mesh_growth = {"subdivide", "crust", "rind", "wireframe",
+                                                            "columns"};
+    if (whole_mesh_growth.count(op.name) && editor.mesh().num_corners() > 2000) {
       try {
         (void)editor.undo();
       } catch (const Error&) {  // inside an open group
