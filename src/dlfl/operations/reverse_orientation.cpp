@@ -15,24 +15,15 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/operations/detail/edge_ends.h>
 #include <dlfl/operations/detail/operation_table.h>
 
 namespace dlfl {
 namespace {
 
-constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-
-// An edge end: edge e at the vertex of its side-s corner, numbered 2e + s.
-std::uint32_t end_of(const Mesh& m, CornerId c) {
-  const EdgeId e = m.edge(c);
-  return 2 * e.index() + (m.corner(e, 0) == c ? 0 : 1);
-}
-
-// The corner at vertex v that starts along edge e, one of whose ends is v (there are no self-loops).
-CornerId corner_at(const Mesh& m, EdgeId e, VertexId v) {
-  const CornerId c = m.corner(e, 0);
-  return m.vertex(c) == v ? c : m.corner(e, 1);
-}
+constexpr std::uint32_t none = detail::no_edge_end;
+using detail::corner_at;
+using detail::end_of;
 
 // One edge deleted: its ends, and at each the end turning just before it around that vertex (in the
 // original, clockwise rotation) among those still present, or `none` if it was the last one there.

@@ -6,6 +6,7 @@
 // present edge that is follows from taking the edges out of per-vertex rotation lists in the reverse order,
 // O(1) each.
 
+#include <dlfl/operations/detail/edge_ends.h>
 #include <dlfl/operations/detail/shell_copy.h>
 
 #include <cmath>
@@ -20,19 +21,7 @@
 namespace dlfl::detail {
 namespace {
 
-constexpr std::uint32_t none = std::numeric_limits<std::uint32_t>::max();
-
-// An edge end: edge e at the vertex of its side-s corner, numbered 2e + s.
-std::uint32_t end_of(const Mesh& m, CornerId c) {
-  const EdgeId e = m.edge(c);
-  return 2 * e.index() + (m.corner(e, 0) == c ? 0 : 1);
-}
-
-// The corner at vertex v that starts along edge e, one of whose ends is v (there are no self-loops).
-CornerId corner_at(const Mesh& m, EdgeId e, VertexId v) {
-  const CornerId c = m.corner(e, 0);
-  return m.vertex(c) == v ? c : m.corner(e, 1);
-}
+constexpr std::uint32_t none = no_edge_end;
 
 bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
