@@ -35,6 +35,7 @@
 #include <dlfl/operations/spheralize.h>
 #include <dlfl/schemes/scheme_registry.h>
 
+#include "modeling_checks.h"
 #include "modeling_meshes.h"
 #include "test_helpers.h"
 
@@ -42,58 +43,31 @@ using namespace dlfl;
 
 namespace {
 
-// The signed volume enclosed by the surface faces, each cut into a fan from its first corner: positive for
-// a closed mesh whose faces turn counter-clockwise seen from outside.
-double signed_volume(const Mesh& m) {
-  double volume = 0;
-  for (FaceId f : surface_faces(m)) {
-    const CornerId first = m.first_corner(f);
-    const glm::dvec3 p0 = m.position(m.vertex(first));
-    for (CornerId c = m.next(first); m.next(c) != first; c = m.next(c)) {
-      volume += glm::dot(p0, glm::cross(m.position(m.vertex(c)), m.position(m.vertex(m.next(c))))) / 6.0;
-    }
-  }
-  return volume;
-}
-
-long euler_characteristic(const Mesh& m) {
-  return long(m.num_vertices()) - long(m.num_edges()) + long(m.num_faces());
-}
+using test::euler_characteristic;
+using test::signed_volume;
 
 struct Delta {
   long v = 0, e = 0, f = 0;
 };
 
-// Applies `op` through an editor and checks what every operation must keep: the counts, the validator, the
-// Euler characteristic, the hole faces, the orientation (a closed mesh's volume keeps its sign), exact undo
-// and redo, and a log written and replayed to the same mesh. Returns the mesh after the op and the outputs.
+// Applies `op` through the shared editor round trip, then checks what every operation must keep: the
+// counts, the Euler characteristic, the hole faces and the orientation (a closed mesh's volume keeps its
+// sign). Returns the mesh after the op and the outputs.
 struct Applied {
   Mesh mesh;
   Params out;
 };
 Applied apply_and_check(const Mesh& start, const std::string& op, const Params& params, Delta delta,
                         bool check_orientation = true) {
-  Editor ed;
-  ed.set_mesh(start);
-  const Params out = ed.apply(op, params);
-  const Mesh after = ed.mesh();
+  Params out;
+  const Mesh after = test::check_editor_round_trip(start, op, params, &out);
   CHECK(long(after.num_vertices()) == long(start.num_vertices()) + delta.v);
   CHECK(long(after.num_edges()) == long(start.num_edges()) + delta.e);
   CHECK(long(after.num_faces()) == long(start.num_faces()) + delta.f);
   CHECK(euler_characteristic(after) == euler_characteristic(start));
-  test::require_valid(after);
   CHECK(after.num_hole_faces() == start.num_hole_faces());
   if (check_orientation && start.num_hole_faces() == 0 && std::abs(signed_volume(start)) > 1e-9)
     CHECK((signed_volume(after) > 0) == (signed_volume(start) > 0));
-  REQUIRE(ed.undo());
-  CHECK(ed.mesh() == start);
-  CHECK(mesh_hash(ed.mesh()) == mesh_hash(start));
-  REQUIRE(ed.redo());
-  CHECK(ed.mesh() == after);
-  CHECK(mesh_hash(ed.mesh()) == mesh_hash(after));
-  const auto path = test::scratch("cleanup.log.json");
-  write_log(ed, path);
-  CHECK(mesh_hash(replay_log_file(path).mesh()) == mesh_hash(after));
   return {after, out};
 }
 

@@ -29,6 +29,7 @@
 #include <dlfl/operations/plane_cut.h>
 #include <dlfl/operations/truncate_vertex.h>
 
+#include "modeling_checks.h"
 #include "modeling_meshes.h"
 #include "test_helpers.h"
 
@@ -36,18 +37,8 @@ using namespace dlfl;
 
 namespace {
 
-// The signed volume enclosed by the surface faces (fans from each first corner): positive for a closed mesh
-// whose faces turn counter-clockwise seen from outside.
-double signed_volume(const Mesh& m) {
-  double volume = 0;
-  for (FaceId f : surface_faces(m)) {
-    const CornerId first = m.first_corner(f);
-    const glm::dvec3 p0 = m.position(m.vertex(first));
-    for (CornerId c = m.next(first); m.next(c) != first; c = m.next(c))
-      volume += glm::dot(p0, glm::cross(m.position(m.vertex(c)), m.position(m.vertex(m.next(c))))) / 6.0;
-  }
-  return volume;
-}
+using test::euler_characteristic;
+using test::signed_volume;
 
 double surface_area(const Mesh& m) {
   double area = 0;
@@ -55,38 +46,22 @@ double surface_area(const Mesh& m) {
   return area;
 }
 
-long euler_characteristic(const Mesh& m) {
-  return long(m.num_vertices()) - long(m.num_edges()) + long(m.num_faces());
-}
-
 struct Delta {
   long v, e, f, holes = 0;
 };
 
-// Applies `op` through an editor and checks the counts, the validator, the Euler characteristic, the hole
-// faces, the orientation, exact undo and redo, and a log written and replayed to the same mesh.
+// Applies `op` through the shared editor round trip, then checks the counts, the Euler characteristic, the
+// hole faces and the orientation.
 Params apply_and_check(const Mesh& start, const std::string& op, const Params& params, Delta delta) {
-  Editor ed;
-  ed.set_mesh(start);
-  const Params out = ed.apply(op, params);
-  const Mesh after = ed.mesh();
+  Params out;
+  const Mesh after = test::check_editor_round_trip(start, op, params, &out);
   CHECK(long(after.num_vertices()) == long(start.num_vertices()) + delta.v);
   CHECK(long(after.num_edges()) == long(start.num_edges()) + delta.e);
   CHECK(long(after.num_faces()) == long(start.num_faces()) + delta.f);
   CHECK(long(after.num_hole_faces()) == long(start.num_hole_faces()) + delta.holes);
   CHECK(euler_characteristic(after) == euler_characteristic(start));
-  test::require_valid(after);
   if (start.num_hole_faces() == 0 && std::abs(signed_volume(start)) > 1e-9)
     CHECK((signed_volume(after) > 0) == (signed_volume(start) > 0));
-  REQUIRE(ed.undo());
-  CHECK(ed.mesh() == start);
-  CHECK(mesh_hash(ed.mesh()) == mesh_hash(start));
-  REQUIRE(ed.redo());
-  CHECK(ed.mesh() == after);
-  CHECK(mesh_hash(ed.mesh()) == mesh_hash(after));
-  const auto path = test::scratch("cutting.log.json");
-  write_log(ed, path);
-  CHECK(mesh_hash(replay_log_file(path).mesh()) == mesh_hash(after));
   return out;
 }
 

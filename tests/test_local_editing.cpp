@@ -30,6 +30,7 @@
 #include <dlfl/operations/splice_corners.h>
 #include <dlfl/validate.h>
 
+#include "modeling_checks.h"
 #include "modeling_meshes.h"
 #include "test_helpers.h"
 #include "test_meshes.h"
@@ -38,28 +39,11 @@ using namespace dlfl;
 
 namespace {
 
-struct Counts {
-  long v = 0, e = 0, f = 0;
-  bool operator==(const Counts&) const = default;
-};
-std::ostream& operator<<(std::ostream& os, const Counts& c) {
-  return os << "V=" << c.v << " E=" << c.e << " F=" << c.f;
-}
-Counts counts(const Mesh& m) { return {long(m.num_vertices()), long(m.num_edges()), long(m.num_faces())}; }
-Counts plus(const Counts& c, long dv, long de, long df) { return {c.v + dv, c.e + de, c.f + df}; }
+using test::Counts;
+using test::counts;
+using test::signed_volume;
 
-// The volume enclosed by the surface faces, each cut into a fan from its first corner: positive for a closed
-// mesh whose faces turn counter-clockwise seen from outside.
-double signed_volume(const Mesh& m) {
-  double volume = 0;
-  for (FaceId f : surface_faces(m)) {
-    const CornerId first = m.first_corner(f);
-    const glm::dvec3 p0 = m.position(m.vertex(first));
-    for (CornerId c = m.next(first); m.next(c) != first; c = m.next(c))
-      volume += glm::dot(p0, glm::cross(m.position(m.vertex(c)), m.position(m.vertex(m.next(c))))) / 6.0;
-  }
-  return volume;
-}
+Counts plus(const Counts& c, long dv, long de, long df) { return {c.v + dv, c.e + de, c.f + df}; }
 
 bool closed(const Mesh& m) { return m.num_hole_faces() == 0; }
 
@@ -77,26 +61,11 @@ CornerId corner_of(const Mesh& m, std::uint32_t v, std::uint32_t f) {
 }
 bool joined(const Mesh& m, VertexId a, VertexId b) { return find_edge(m, a, b).valid(); }
 
-// Applies an operation through an editor: undo gives the mesh back (equal, same hash), redo gives the first
-// result again, and the written log replays to a mesh of the same hash. `mesh` becomes the result; the
-// operation's outputs are returned.
+// Applies an operation through the shared editor round trip; `mesh` becomes the result and the operation's
+// outputs are returned.
 Params apply_exactly(Mesh& mesh, const std::string& op, const Params& params) {
-  Editor ed;
-  ed.set_mesh(mesh);
-  const Mesh before = ed.mesh();
-  const std::string before_hash = mesh_hash(before);
-  const Params out = ed.apply(op, params);
-  const Mesh after = ed.mesh();
-  test::require_valid(after);
-  REQUIRE(ed.undo());
-  CHECK(ed.mesh() == before);
-  CHECK(mesh_hash(ed.mesh()) == before_hash);
-  REQUIRE(ed.redo());
-  CHECK(ed.mesh() == after);
-  const auto path = test::scratch(op + "_replay.json");
-  write_log(ed, path);
-  CHECK(mesh_hash(replay_log_file(path).mesh()) == mesh_hash(after));
-  mesh = after;
+  Params out;
+  mesh = test::check_editor_round_trip(mesh, op, params, &out);
   return out;
 }
 

@@ -26,6 +26,7 @@
 #include <dlfl/operations/transform.h>
 #include <dlfl/operations/triangulate.h>
 
+#include "modeling_checks.h"
 #include "modeling_meshes.h"
 #include "test_helpers.h"
 #include "test_meshes.h"
@@ -34,42 +35,10 @@ using namespace dlfl;
 
 namespace {
 
-struct Counts {
-  long v, e, f;
-  friend bool operator==(const Counts&, const Counts&) = default;
-};
-
-Counts counts(const Mesh& m) { return {long(m.num_vertices()), long(m.num_edges()), long(m.num_faces())}; }
-
-doctest::String to_text(const Counts& c) {
-  return ("V=" + std::to_string(c.v) + " E=" + std::to_string(c.e) + " F=" + std::to_string(c.f)).c_str();
-}
-
-}  // namespace
-
-namespace doctest {
-template <>
-struct StringMaker<Counts> {
-  static String convert(const Counts& c) { return to_text(c); }
-};
-}  // namespace doctest
-
-namespace {
-
-// The volume the surface faces enclose, from the triangles fanned out of each face's first corner: positive
-// for a closed mesh whose faces turn counter-clockwise seen from outside.
-double signed_volume(const Mesh& m) {
-  double six_volumes = 0.0;
-  for (FaceId f : surface_faces(m)) {
-    const glm::dvec3& p0 = m.position(m.vertex(m.first_corner(f)));
-    for (CornerId c : m.corners(f)) {
-      const glm::dvec3& p = m.position(m.vertex(c));
-      const glm::dvec3& q = m.position(m.vertex(m.next(c)));
-      six_volumes += glm::dot(p0, glm::cross(p, q));
-    }
-  }
-  return six_volumes / 6.0;
-}
+using test::check_editor_round_trip;
+using test::Counts;
+using test::counts;
+using test::signed_volume;
 
 bool closed(const Mesh& m) { return m.num_hole_faces() == 0; }
 
@@ -108,50 +77,6 @@ FaceId first_hole(const Mesh& m) {
   for (FaceId f : m.faces())
     if (m.is_hole(f)) return f;
   return FaceId();
-}
-
-// Applies `op` through an editor and checks the history and the log: undo gives back the mesh equal and of
-// the same hash, redo the first result, and the log written to a file replays to the same hash. Returns the
-// result.
-Mesh check_editor_round_trip(const Mesh& start, const std::string& op, const Params& params) {
-  Editor ed;
-  ed.set_mesh(start);
-  const Mesh before = ed.mesh();
-  const std::string before_hash = mesh_hash(before);
-  ed.apply(op, params);
-  const Mesh after = ed.mesh();
-  test::require_valid(after);
-  REQUIRE(ed.undo());
-  CHECK(ed.mesh() == before);
-  CHECK(mesh_hash(ed.mesh()) == before_hash);
-  REQUIRE(ed.redo());
-  CHECK(ed.mesh() == after);
-  const auto path = test::scratch("local_faces_" + op + ".json");
-  write_log(ed, path);
-  CHECK(mesh_hash(replay_log_file(path).mesh()) == mesh_hash(after));
-  return after;
-}
-
-// Applies `op`, which must be refused with a ParameterError naming `parameter` with a message that starts
-// with the operation's name and names the parameter; the mesh must be left as it was. Returns the message.
-std::string refusal(const Mesh& start, const std::string& op, const Params& params,
-                    const std::string& parameter) {
-  Editor ed;
-  ed.set_mesh(start);
-  const Mesh before = ed.mesh();
-  std::string message, named;
-  try {
-    ed.apply(op, params);
-  } catch (const ParameterError& e) {
-    message = e.what();
-    named = e.parameter();
-  }
-  CAPTURE(message);
-  CHECK(named == parameter);
-  CHECK(message.rfind(op + ": parameter " + parameter, 0) == 0);
-  CHECK(ed.mesh() == before);
-  CHECK(ed.log().size() == 1);  // the set_mesh only
-  return message;
 }
 
 // The cube with a dangling edge inside its face f: a new vertex at the face's centre joined to its first
@@ -268,27 +193,32 @@ TEST_CASE("stellate_face: undo, redo and the log, on every modeling mesh") {
 TEST_CASE("stellate_face: refusals name the argument and change nothing") {
   const Mesh grid = build_mesh(test::grid_soup(3, 2));
   const FaceId hole = first_hole(grid);
-  CHECK(refusal(grid, "stellate_face", {}, "face").find("give face or faces") != std::string::npos);
-  CHECK(refusal(grid, "stellate_face", {{"face", 0}, {"faces", "1,2"}}, "face").find("both") !=
+  CHECK(test::check_refusal(grid, "stellate_face", {}, "face").find("give face or faces") !=
         std::string::npos);
-  CHECK(refusal(grid, "stellate_face", {{"face", hole}}, "face").find("hole") != std::string::npos);
-  CHECK(refusal(grid, "stellate_face", {{"faces", std::vector<FaceId>{FaceId(0), hole}}}, "faces")
+  CHECK(test::check_refusal(grid, "stellate_face", {{"face", 0}, {"faces", "1,2"}}, "face").find("both") !=
+        std::string::npos);
+  CHECK(test::check_refusal(grid, "stellate_face", {{"face", hole}}, "face").find("hole") !=
+        std::string::npos);
+  CHECK(test::check_refusal(grid, "stellate_face", {{"faces", std::vector<FaceId>{FaceId(0), hole}}}, "faces")
             .find("hole") != std::string::npos);
-  CHECK(refusal(grid, "stellate_face", {{"faces", "0,2,0"}}, "faces").find("f0 twice") != std::string::npos);
-  CHECK(refusal(grid, "stellate_face", {{"faces", std::vector<FaceId>{}}}, "faces").find("empty") !=
+  CHECK(test::check_refusal(grid, "stellate_face", {{"faces", "0,2,0"}}, "faces").find("f0 twice") !=
         std::string::npos);
-  CHECK(refusal(grid, "stellate_face", {{"face", 99}}, "face").find("does not exist") != std::string::npos);
+  CHECK(
+      test::check_refusal(grid, "stellate_face", {{"faces", std::vector<FaceId>{}}}, "faces").find("empty") !=
+      std::string::npos);
+  CHECK(test::check_refusal(grid, "stellate_face", {{"face", 99}}, "face").find("does not exist") !=
+        std::string::npos);
   Mesh with_sphere = grid;
   const VertexId p = with_sphere.create_vertex({5, 5, 5});
   const FaceId sphere = with_sphere.face(with_sphere.corner(p));
-  CHECK(refusal(with_sphere, "stellate_face", {{"face", sphere}}, "face").find("point sphere") !=
+  CHECK(test::check_refusal(with_sphere, "stellate_face", {{"face", sphere}}, "face").find("point sphere") !=
         std::string::npos);
   // An apex past the largest double: the cube blown up to +-1e308, raised by 1e308 more.
   Mesh huge = test::cube();
   apply_operation(huge, "transform", {{"scale", glm::dvec3(1e308)}});
-  CHECK(refusal(huge, "stellate_face", {{"face", 1}, {"height", 1e308}}, "face").find("non-finite") !=
-        std::string::npos);
-  CHECK(refusal(huge, "stellate_face", {{"faces", "0,1"}, {"height", 1e308}}, "faces")
+  CHECK(test::check_refusal(huge, "stellate_face", {{"face", 1}, {"height", 1e308}}, "face")
+            .find("non-finite") != std::string::npos);
+  CHECK(test::check_refusal(huge, "stellate_face", {{"faces", "0,1"}, {"height", 1e308}}, "faces")
             .find("lists f0, which would get its new vertex at a non-finite position") != std::string::npos);
   // The library function refuses the same way.
   Mesh m = grid;
@@ -406,14 +336,16 @@ TEST_CASE("subdivide_face: the neighbouring hole grows by a side; undo, redo and
 
 TEST_CASE("subdivide_face: refusals name the argument and change nothing") {
   const Mesh grid = build_mesh(test::grid_soup(3, 2));
-  CHECK(refusal(grid, "subdivide_face", {{"face", first_hole(grid)}}, "face").find("hole") !=
+  CHECK(test::check_refusal(grid, "subdivide_face", {{"face", first_hole(grid)}}, "face").find("hole") !=
         std::string::npos);
-  CHECK(refusal(grid, "subdivide_face", {{"face", 42}}, "face").find("does not exist") != std::string::npos);
-  CHECK(refusal(grid, "subdivide_face", {{"face", 0}, {"style", "hexagons"}}, "style") != "");
-  CHECK(refusal(grid, "subdivide_face", {}, "face") != "");
+  CHECK(test::check_refusal(grid, "subdivide_face", {{"face", 42}}, "face").find("does not exist") !=
+        std::string::npos);
+  CHECK(test::check_refusal(grid, "subdivide_face", {{"face", 0}, {"style", "hexagons"}}, "style") != "");
+  CHECK(test::check_refusal(grid, "subdivide_face", {}, "face") != "");
   Mesh with_sphere = grid;
   const VertexId p = with_sphere.create_vertex({5, 5, 5});
-  CHECK(refusal(with_sphere, "subdivide_face", {{"face", with_sphere.face(with_sphere.corner(p))}}, "face")
+  CHECK(test::check_refusal(with_sphere, "subdivide_face",
+                            {{"face", with_sphere.face(with_sphere.corner(p))}}, "face")
             .find("point sphere") != std::string::npos);
   Mesh m = grid;
   Transaction tx(m);
@@ -580,8 +512,9 @@ TEST_CASE("triangulate: undo, redo and the log; refusals") {
     check_editor_round_trip(mesh, "triangulate", {});
   }
   const Mesh cube = test::cube();
-  CHECK(refusal(cube, "triangulate", {{"faces", "1,2,1"}}, "faces").find("f1 twice") != std::string::npos);
-  CHECK(refusal(cube, "triangulate", {{"faces", "1,17"}}, "faces").find("does not exist") !=
+  CHECK(test::check_refusal(cube, "triangulate", {{"faces", "1,2,1"}}, "faces").find("f1 twice") !=
+        std::string::npos);
+  CHECK(test::check_refusal(cube, "triangulate", {{"faces", "1,17"}}, "faces").find("does not exist") !=
         std::string::npos);
   Mesh m = cube;
   Transaction tx(m);
@@ -778,21 +711,23 @@ TEST_CASE("transform: counts and volume sign on every modeling mesh; undo, redo 
 
 TEST_CASE("transform: refusals name the argument and change nothing") {
   const Mesh cube = test::cube();
-  CHECK(refusal(cube, "transform", {{"rotate_axis", glm::dvec3(0.0)}}, "rotate_axis").find("zero") !=
+  CHECK(test::check_refusal(cube, "transform", {{"rotate_axis", glm::dvec3(0.0)}}, "rotate_axis")
+            .find("zero") != std::string::npos);
+  CHECK(test::check_refusal(cube, "transform", {{"scale", glm::dvec3(1, 0, 1)}}, "scale").find("zero") !=
         std::string::npos);
-  CHECK(refusal(cube, "transform", {{"scale", glm::dvec3(1, 0, 1)}}, "scale").find("zero") !=
+  CHECK(test::check_refusal(cube, "transform", {{"scale", glm::dvec3(-1, 1, 1)}}, "scale").find("odd") !=
         std::string::npos);
-  CHECK(refusal(cube, "transform", {{"scale", glm::dvec3(-1, 1, 1)}}, "scale").find("odd") !=
+  CHECK(test::check_refusal(cube, "transform", {{"scale", glm::dvec3(-1, -1, -1)}}, "scale").find("odd") !=
         std::string::npos);
-  CHECK(refusal(cube, "transform", {{"scale", glm::dvec3(-1, -1, -1)}}, "scale").find("odd") !=
-        std::string::npos);
-  CHECK(refusal(cube, "transform", {{"scale", glm::dvec3(1e308, 1, 1)}, {"center", glm::dvec3(-1e10, 0, 0)}},
-                "scale")
+  CHECK(test::check_refusal(cube, "transform",
+                            {{"scale", glm::dvec3(1e308, 1, 1)}, {"center", glm::dvec3(-1e10, 0, 0)}},
+                            "scale")
             .find("finite") != std::string::npos);
-  CHECK(refusal(cube, "transform",
-                {{"scale", glm::dvec3(1e308, 1, 1)}, {"translate", glm::dvec3(1e308, 0, 0)}}, "translate")
+  CHECK(test::check_refusal(cube, "transform",
+                            {{"scale", glm::dvec3(1e308, 1, 1)}, {"translate", glm::dvec3(1e308, 0, 0)}},
+                            "translate")
             .find("finite") != std::string::npos);
-  CHECK(refusal(cube, "transform", {{"rotate_degrees", "x"}}, "rotate_degrees") != "");
+  CHECK(test::check_refusal(cube, "transform", {{"rotate_degrees", "x"}}, "rotate_degrees") != "");
   Mesh m = cube;
   Transaction tx(m);
   TransformOptions zero_axis;

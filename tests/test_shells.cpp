@@ -31,6 +31,7 @@
 #include <dlfl/operations/rind.h>
 #include <dlfl/operations/wireframe.h>
 
+#include "modeling_checks.h"
 #include "modeling_meshes.h"
 #include "test_helpers.h"
 #include "test_meshes.h"
@@ -56,13 +57,8 @@ double signed_volume(const Mesh& m, Keep keep) {
   }
   return volume;
 }
-double signed_volume(const Mesh& m) {
-  return signed_volume(m, [](VertexId) { return true; });
-}
-
-long euler_characteristic(const Mesh& m) {
-  return long(m.num_vertices()) - long(m.num_edges()) + long(m.num_faces());
-}
+using test::euler_characteristic;
+using test::signed_volume;
 
 // Connected components, by a search along the edges.
 long components(const Mesh& m) {
@@ -87,32 +83,15 @@ long components(const Mesh& m) {
   return count;
 }
 
-struct Counts {
-  long v, e, f;
-};
+using test::Counts;
 
-// Applies `op` through an editor and checks the counts, the validator, exact undo and redo, and a log
-// written and replayed to the same mesh. Returns the mesh after.
+// Applies `op` through the shared editor round trip, then checks the counts. Returns the mesh after.
 Mesh apply_and_check(const Mesh& start, const std::string& op, const Params& params, Counts expected,
                      Params* outputs = nullptr) {
-  Editor ed;
-  ed.set_mesh(start);
-  const Params out = ed.apply(op, params);
-  if (outputs) *outputs = out;
-  const Mesh after = ed.mesh();
+  const Mesh after = test::check_editor_round_trip(start, op, params, outputs);
   CHECK(long(after.num_vertices()) == expected.v);
   CHECK(long(after.num_edges()) == expected.e);
   CHECK(long(after.num_faces()) == expected.f);
-  test::require_valid(after);
-  REQUIRE(ed.undo());
-  CHECK(ed.mesh() == start);
-  CHECK(mesh_hash(ed.mesh()) == mesh_hash(start));
-  REQUIRE(ed.redo());
-  CHECK(ed.mesh() == after);
-  CHECK(mesh_hash(ed.mesh()) == mesh_hash(after));
-  const auto path = test::scratch("shells.log.json");
-  write_log(ed, path);
-  CHECK(mesh_hash(replay_log_file(path).mesh()) == mesh_hash(after));
   return after;
 }
 

@@ -20,6 +20,7 @@
 #include <dlfl/schemes/scheme_registry.h>
 #include <dlfl/validate.h>
 #include "log_helpers.h"
+#include "modeling_checks.h"
 #include "scheme_meshes.h"
 #include "test_helpers.h"
 #include "test_meshes.h"
@@ -121,21 +122,6 @@ inline glm::dvec3 centroid(const Mesh& m, FaceId f) {
   glm::dvec3 s(0.0);
   for (CornerId c : m.corners(f)) s += m.position(m.vertex(c));
   return s / double(m.size(f));
-}
-
-/// Signed volume enclosed by the non-hole faces (each cut into a fan): positive when faces turn
-/// counter-clockwise seen from outside, so it tells an outward orientation from an inward one.
-inline double signed_volume(const Mesh& m) {
-  double volume = 0;
-  for (FaceId f : m.faces()) {
-    if (m.is_hole(f)) continue;
-    const CornerId first = m.first_corner(f);
-    const glm::dvec3 p0 = m.position(m.vertex(first));
-    for (CornerId c = m.next(first); m.next(c) != first; c = m.next(c)) {
-      volume += glm::dot(p0, glm::cross(m.position(m.vertex(c)), m.position(m.vertex(m.next(c))))) / 6.0;
-    }
-  }
-  return volume;
 }
 
 /// The vertices of a face from its first corner.
