@@ -173,7 +173,8 @@ TEST_CASE("remove_valence2: the modeling meshes") {
   // corners have two (to (1,0) and (0,1), not joined to each other): each goes, its corner quad becomes a
   // triangle and the hole face loses a corner: V-4, E-4, F+0.
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const long k = is_grid(name) ? 4 : 0;
     const Applied r = apply_and_check(mesh, "remove_valence2", {}, {-k, -k, 0});
     CHECK(r.out.integer("vertices_removed") == k);
@@ -263,7 +264,8 @@ TEST_CASE("remove_valence2: a join that would double an edge with no 2-gon betwe
 
 TEST_CASE("remove_2gons: the modeling meshes have none; collapsed triangles lose theirs") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     CHECK(apply_and_check(mesh, "remove_2gons", {}, {}).out.integer("two_gons_removed") == 0);
   }
   // An octahedron edge collapsed without cleanup: its two triangles become 2-gons (V 5, E 11, F 8). Each is
@@ -345,7 +347,8 @@ TEST_CASE("dissolve_coplanar: the modeling meshes") {
   // vertices, and the six boundary vertices between corners, left with two edges along the border, are
   // joined away: V 4, E 4, F 2 (the quad and the hole).
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     if (is_slab(name)) continue;
     const Delta d = is_grid(name) ? Delta{-8, -13, -5} : Delta{};
     const Applied r = apply_and_check(mesh, "dissolve_coplanar", {}, d);
@@ -366,8 +369,9 @@ TEST_CASE("dissolve_coplanar: the genus slabs keep their walls apart and their t
   // four outer walls is a strip of quads in one plane: one face each. The 4g walls of the holes lie in no
   // plane with a neighbour: they stay.
   for (const auto& [name, mesh] : test::modeling_meshes()) {
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
     if (!is_slab(name)) continue;
-    CAPTURE(name);
+    CAPTURE(name_);
     const long g = name == "genus 2" ? 2 : 3;
     Editor ed;
     ed.set_mesh(mesh);
@@ -472,7 +476,8 @@ TEST_CASE("planarize: planar meshes do not move") {
   // Every face of the modeling meshes is planar (the torus's quads are isosceles trapezoids): the measure
   // is 0 up to rounding, and no vertex is written.
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     CHECK(nonplanarity(mesh) <= 1e-12);
     const Applied r = apply_and_check(mesh, "planarize", {}, {});
     CHECK(r.mesh == mesh);
@@ -567,7 +572,8 @@ TEST_CASE("smooth: the open grid's boundary stays unless asked") {
 
 TEST_CASE("smooth: the modeling meshes keep their counts, validity and orientation") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     apply_and_check(mesh, "smooth", {{"iterations", 3}}, {});
     CHECK(apply_and_check(mesh, "smooth", {{"iterations", 0}}, {}).mesh == mesh);
   }
@@ -593,7 +599,8 @@ TEST_CASE("smooth: refusals") {
 
 TEST_CASE("spheralize: every vertex at the radius afterwards") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     // Projecting the second component from a centre outside it folds it: its volume's sign is not kept.
     const bool folds = name == "cube and tetrahedron";
     const Applied r = apply_and_check(mesh, "spheralize", {}, {}, !folds);

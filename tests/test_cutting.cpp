@@ -129,7 +129,8 @@ VertexId vertex_at(const Mesh& m, const glm::dvec3& p) {
 
 TEST_CASE("truncate_vertex: V+k-1, E+k, F+1 on every modeling mesh, the new face a k-gon") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     int tried = 0;
     for (VertexId v : mesh.vertices()) {
       if (tried++ == 3) break;
@@ -222,7 +223,8 @@ TEST_CASE("truncate_vertex: a vertex of valence 2 becomes a 2-gon; the open grid
 
 TEST_CASE("chamfer_edge: V+a+b-4, E+a+b-3, F+1 on every modeling mesh") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     int tried = 0;
     for (EdgeId e : mesh.edges()) {
       if (tried++ == 3) break;
@@ -259,7 +261,8 @@ TEST_CASE("chamfer_edge: two opposite edges of a face, joined by edges that get 
 
 TEST_CASE("cut_face: V+m-n, E+m-n, F+0 with m = sum (valence - 2), on every modeling mesh") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     int tried = 0;
     for (FaceId f : surface_faces(mesh)) {
       if (tried++ == 3) break;
@@ -561,7 +564,8 @@ TEST_CASE("plane_cut: random planes through random meshes: no edge crosses, loop
   const std::vector<std::string> convex = {
       "tetrahedron", "cube", "octahedron", "pentagonal prism", "hexagonal prism", "octagonal prism"};
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const bool is_convex = std::find(convex.begin(), convex.end(), name) != convex.end();
     glm::dvec3 centre(0.0);
     for (VertexId v : mesh.vertices()) centre += mesh.position(v);
@@ -662,7 +666,8 @@ TEST_CASE(
   auto meshes = test::modeling_meshes();
   meshes.push_back({"messy cube", messy_cube()});
   for (const auto& [name, mesh] : meshes) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     for (const std::string op : {"truncate_vertex", "chamfer_edge", "cut_face"}) {
       CAPTURE(op);
       const std::uint32_t count = op == "truncate_vertex" ? mesh.vertex_capacity()

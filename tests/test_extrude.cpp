@@ -191,10 +191,11 @@ VertexId cube_vertex(const Mesh& m, double x, double y, double z) {
 
 TEST_CASE("extrude_face: every style's counts and new faces on faces of 3 to 8 sides") {
   for (const auto& [name, mesh] : meshes()) {
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
     for (FaceId f : one_face_per_size(mesh)) {
       const auto n = mesh.size(f);
       for (const std::string& style : all_styles) {
-        CAPTURE(name);
+        CAPTURE(name_);
         CAPTURE(n);
         CAPTURE(style);
         const Params out = apply_and_check(mesh, "extrude_face", {{"face", f}, {"style", style}},
@@ -229,11 +230,12 @@ TEST_CASE("extrude_face: segments 1 to 8 repeat the unit of the styles that end 
                                                 {"pentagonal prism", build_mesh(test::prism_soup(5))},
                                                 {"open grid", build_mesh(test::grid_soup(3, 2))}};
   for (const auto& [name, mesh] : some) {
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
     const FaceId f = one_face_per_size(mesh).back();
     const auto n = mesh.size(f);
     for (const std::string& style : segment_styles) {
       for (long s = 1; s <= 8; ++s) {
-        CAPTURE(name);
+        CAPTURE(name_);
         CAPTURE(style);
         CAPTURE(s);
         apply_and_check(
@@ -250,11 +252,12 @@ TEST_CASE("extrude_face: segments 1 to 8 repeat the unit of the styles that end 
 
 TEST_CASE("extrude_face: a cubical extrusion along the normal adds distance times area to the volume") {
   for (const auto& [name, mesh] : meshes()) {
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
     if (mesh.num_hole_faces() != 0) continue;
     for (FaceId f : one_face_per_size(mesh)) {
       for (double d : {0.5, 1.5, -0.125}) {
         for (long s : {1, 3}) {
-          CAPTURE(name);
+          CAPTURE(name_);
           CAPTURE(d);
           CAPTURE(s);
           Mesh m = mesh;
@@ -277,10 +280,12 @@ TEST_CASE("extrude_face: stellate and double-stellate add pyramids of volume d A
   // each of those triangles away, so the apex stands over a star of area 2A/3.
   for (const char* name : {"tetrahedron", "cube", "octahedron", "pentagonal prism", "octagonal prism"}) {
     for (const auto& [mesh_name, mesh] : meshes()) {
+      const auto& mesh_name_ = mesh_name;  // clang 14 cannot capture a structured binding
+      const auto& mesh_ = mesh;            // clang 14 cannot capture a structured binding
       if (mesh_name != name) continue;
       for (FaceId f : one_face_per_size(mesh)) {
-        CAPTURE(mesh_name);
-        CAPTURE(mesh.size(f));
+        CAPTURE(mesh_name_);
+        CAPTURE(mesh_.size(f));
         const double area = face_area(mesh, f), volume = signed_volume(mesh);
         Mesh once = mesh, twice = mesh;
         apply_operation(once, "extrude_face", {{"face", f}, {"style", "stellate"}, {"distance", 0.8}});
@@ -580,9 +585,10 @@ TEST_CASE("extrude_face and inset_face: the parameters and defaults of the contr
 
 TEST_CASE("inset_face: a copy inside every face size, joined by n quads: V+n, E+2n, F+n") {
   for (const auto& [name, mesh] : meshes()) {
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
     for (FaceId f : one_face_per_size(mesh)) {
       const long n = mesh.size(f);
-      CAPTURE(name);
+      CAPTURE(name_);
       CAPTURE(n);
       const Params out = apply_and_check(mesh, "inset_face", {{"face", f}, {"depth", 0.1}}, {n, 2 * n, n});
       Mesh m = mesh;
@@ -603,9 +609,10 @@ TEST_CASE("inset_face: depth raises the copy along the normal, a frustum of volu
   // The copy is the face scaled by k = 1 - amount about its centroid and raised by h: the solid between is
   // a frustum of a pyramid, of bases A and k^2 A: h/3 (A + k^2 A + k A). With depth 0 the volume stays.
   for (const auto& [name, mesh] : meshes()) {
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
     if (mesh.num_hole_faces() != 0) continue;
     for (FaceId f : one_face_per_size(mesh)) {
-      CAPTURE(name);
+      CAPTURE(name_);
       const double area = face_area(mesh, f), volume = signed_volume(mesh);
       for (double amount : {0.25, 0.6}) {
         for (double h : {0.0, 0.4, -0.2}) {

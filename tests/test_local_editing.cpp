@@ -205,7 +205,8 @@ TEST_CASE(
   // triangles; the quad meshes (cube, prisms, 4-rings of the torus, slabs, grid) have none, and no face
   // visits both ends of an edge away from it; the grid's boundary vertices are never joined by an inner edge.
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const Counts before = counts(mesh);
     const double volume = signed_volume(mesh);
     for (EdgeId e : mesh.edges()) {
@@ -255,7 +256,8 @@ TEST_CASE(
 
 TEST_CASE("collapse_edge: undo, redo and log replay are exact on every modeling mesh") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     // The first edge that is in no torus 3-ring (every edge elsewhere collapses).
     EdgeId e(0);
     while (name == "torus 4x3" && mesh.from(e).index() / 3 == mesh.to(e).index() / 3)
@@ -556,13 +558,15 @@ TEST_CASE("splice_corners: one face is split and pinched, two faces are merged")
 TEST_CASE("splice_corners: counts on the modeling meshes, for the corner pairs it accepts") {
   // Closed forms: corners of one face V-1, E+0, F+1; of two faces V-1, E+0, F-1.
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    const auto& mesh_ = mesh;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const Counts before = counts(mesh);
     int accepted = 0;
     for (CornerId c1 : mesh.corners()) {
       for (CornerId c2 : mesh.corners()) {
         if ((c1.index() * 7 + c2.index()) % 11 != 0) continue;  // a sample of the pairs
-        if (refused([&] { check_splice_corners(mesh, c1, c2); })) continue;
+        if (refused([&] { check_splice_corners(mesh_, c1, c2); })) continue;
         ++accepted;
         const Mesh m = applied(mesh, "splice_corners", {{"corner1", c1}, {"corner2", c2}});
         test::require_valid(m);
@@ -587,7 +591,9 @@ TEST_CASE("splice_corners: its checks predict those of the collapse of the edge 
   with_sphere.create_vertex(glm::dvec3(0, 0, 3));
   meshes.push_back({"cube and a point sphere", with_sphere});
   for (auto& [name, mesh] : meshes) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    const auto& mesh_ = mesh;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const Mesh original = mesh;
     const std::uint32_t stride = mesh.num_corners() > 100 ? 3 : 1;
     int agreed = 0;
@@ -601,7 +607,7 @@ TEST_CASE("splice_corners: its checks predict those of the collapse of the edge 
         const bool splice_refused = refused([&] { check_splice_corners(original, c1, c2); });
         Transaction tx(mesh);  // reverted at the end of the iteration
         const EdgeId e = tx.insert_edge(c1, c2).edge;
-        CHECK(splice_refused == refused([&] { check_collapse_edge(mesh, e); }));
+        CHECK(splice_refused == refused([&] { check_collapse_edge(mesh_, e); }));
         ++agreed;
       }
     }
@@ -679,7 +685,8 @@ TEST_CASE("divide_edge: counts, equal spacing and the chain of edges on every mo
   CHECK(find_operation("divide_edge").params.at(1).name == "segments");
   CHECK(find_operation("divide_edge").params.at(1).default_value == Value(2));
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const Counts before = counts(mesh);
     for (EdgeId e : {EdgeId(0), EdgeId(mesh.num_edges() / 2)}) {
       const glm::dvec3 a = mesh.position(mesh.from(e)), b = mesh.position(mesh.to(e));
@@ -786,7 +793,8 @@ TEST_CASE("flip_edge: a backward flip undoes a forward one on faces of any sizes
   for (const auto& [name, soup] :
        {std::pair{"cube", test::cube_soup()}, std::pair{"prism", test::prism_soup(5)},
         std::pair{"octahedron", test::octahedron_soup()}}) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const Mesh start = mesh_of(soup);
     for (EdgeId e : start.edges()) {
       Mesh m = start;
@@ -808,7 +816,8 @@ TEST_CASE("flip_edge: counts on every modeling mesh, where it applies") {
   // edges. Everywhere else the two new ends are neither joined nor on the other face, and every vertex has at
   // least 3 edges.
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     for (EdgeId e : mesh.edges()) {
       CAPTURE(e);
       const bool in_tetrahedron =
@@ -891,7 +900,8 @@ TEST_CASE("flip_edge: refusals, each naming the edge, the mesh unchanged") {
 
 TEST_CASE("make_hole and fill_hole: every surface face of every modeling mesh, and back") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     for (FaceId f : mesh.faces()) {
       if (mesh.is_hole(f)) continue;
       CAPTURE(f);
@@ -939,7 +949,8 @@ TEST_CASE("local editing: random sequences of the six operations on every modeli
     return std::uniform_int_distribution<std::uint32_t>(0, n - 1)(random);
   };
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     Editor ed;
     ed.set_mesh(mesh);
     int accepted = 0;

@@ -104,7 +104,8 @@ Mesh two_gons() {
 
 TEST_CASE("stellate_face: every surface face of every modeling mesh: V+1, E+n, F+n-1, triangles around") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     for (FaceId f : surface_face_list(mesh)) {
       CAPTURE(f);
       Mesh m = mesh;
@@ -183,7 +184,8 @@ TEST_CASE("stellate_face: faces with a dangling edge and 2-gons") {
 
 TEST_CASE("stellate_face: undo, redo and the log, on every modeling mesh") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const FaceId f = surface_face_list(mesh).back();
     check_editor_round_trip(mesh, "stellate_face", {{"face", f}, {"height", 0.25}});
     check_editor_round_trip(mesh, "stellate_face", {{"faces", surface_face_list(mesh)}});
@@ -236,7 +238,8 @@ TEST_CASE("stellate_face: refusals name the argument and change nothing") {
 
 TEST_CASE("subdivide_face: quads on every surface face of every modeling mesh: V+n+1, E+2n, F+n-1") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     for (FaceId f : surface_face_list(mesh)) {
       CAPTURE(f);
       Mesh m = mesh;
@@ -289,7 +292,8 @@ TEST_CASE("subdivide_face: the cube's top face by hand; the neighbours become pe
 
 TEST_CASE("subdivide_face: triangles is stellate_face with height 0") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const FaceId f = surface_face_list(mesh).front();
     Mesh a = mesh, b = mesh;
     const Params out = apply_operation(a, "subdivide_face", {{"face", f}, {"style", "triangles"}});
@@ -327,7 +331,8 @@ TEST_CASE("subdivide_face: the neighbouring hole grows by a side; undo, redo and
   CHECK(m.size(first_hole(m)) == 12);  // 10 + 2
   CHECK(m.num_hole_faces() == 1);
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     check_editor_round_trip(mesh, "subdivide_face", {{"face", surface_face_list(mesh).back()}});
     check_editor_round_trip(mesh, "subdivide_face",
                             {{"face", surface_face_list(mesh).front()}, {"style", "triangles"}});
@@ -359,7 +364,8 @@ TEST_CASE("subdivide_face: refusals name the argument and change nothing") {
 
 TEST_CASE("triangulate: every modeling mesh: E+(n-3), F+(n-3) per face of n > 3 sides, holes left alone") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     long diagonals = 0;
     for (FaceId f : surface_faces(mesh)) diagonals += std::max(0L, long(mesh.size(f)) - 3);
     Mesh m = mesh;
@@ -508,7 +514,8 @@ TEST_CASE("triangulate: faces visiting a vertex twice or three times; 2-gons sta
 
 TEST_CASE("triangulate: undo, redo and the log; refusals") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     check_editor_round_trip(mesh, "triangulate", {});
   }
   const Mesh cube = test::cube();
@@ -528,7 +535,9 @@ TEST_CASE("triangulate: undo, redo and the log; refusals") {
 
 TEST_CASE("reverse_orientation: every face reversed on every modeling mesh; twice gives the faces back") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    const auto& mesh_ = mesh;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     Mesh m = mesh;
     apply_operation(m, "reverse_orientation");
     test::require_valid(m);
@@ -542,7 +551,7 @@ TEST_CASE("reverse_orientation: every face reversed on every modeling mesh; twic
     }
     const std::vector<long> genus_before = [&] {
       std::vector<long> g;
-      for (const auto& c : validate(mesh).components) g.push_back(c.genus);
+      for (const auto& c : validate(mesh_).components) g.push_back(c.genus);
       return g;
     }();
     std::vector<long> genus_after;
@@ -632,7 +641,8 @@ TEST_CASE("reverse_orientation: named values follow their elements") {
 
 TEST_CASE("reverse_orientation: undo, redo and the log on every modeling mesh") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     check_editor_round_trip(mesh, "reverse_orientation", {});
   }
 }
@@ -642,7 +652,8 @@ TEST_CASE("reverse_orientation: undo, redo and the log on every modeling mesh") 
 
 TEST_CASE("transform: the defaults change nothing, on every modeling mesh") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     Mesh m = mesh;
     apply_operation(m, "transform");
     CHECK(m == mesh);
@@ -698,7 +709,8 @@ TEST_CASE("transform: translate, scale and rotate, in that order about the centr
 
 TEST_CASE("transform: counts and volume sign on every modeling mesh; undo, redo and the log") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const Params params = {{"scale", glm::dvec3(0.5, -2, -3)},
                            {"rotate_axis", glm::dvec3(1, -2, 0.5)},
                            {"rotate_degrees", 33.0},

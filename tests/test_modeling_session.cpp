@@ -203,7 +203,8 @@ TEST_CASE("a random session of legal modeling operations validates, replays and 
       }
     }
     for (const auto& [name, drawer] : ops) {
-      CAPTURE(name);
+      const auto& name_ = name;  // clang 14 cannot capture a structured binding
+      CAPTURE(name_);
       CHECK(applied[name] > 0);
     }
     CHECK(undos > 0);

@@ -37,7 +37,8 @@ TEST_CASE("tool: dlfl ops lists every modeling operation with its contract field
       {"inset_face", {"face", "faces", "amount", "depth"}},
   };
   for (const auto& [name, fields] : contract) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const nlohmann::json* op = nullptr;
     for (const auto& o : listing) {
       if (o["name"] == name) op = &o;

@@ -163,7 +163,8 @@ std::vector<FaceId> first_surface_faces(const Mesh& m, std::size_t k, long& side
 
 TEST_CASE("crust: doubled counts, reversed faces, inner positions and orientation on every modeling mesh") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const double thickness = 0.1;
     const FaceSides sides = face_sides(mesh);
     // Closed: everything doubles. Each hole face of h sides: a tube of h quads (E+h, F+h-2).
@@ -226,8 +227,9 @@ TEST_CASE("crust: the grid by hand, and twice") {
 
 TEST_CASE("rind: 2chi - 2k on every closed modeling mesh, k = 1 and 2") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
     if (mesh.num_hole_faces() > 0) continue;
-    CAPTURE(name);
+    CAPTURE(name_);
     for (std::size_t k = 1; k <= 2; ++k) {
       CAPTURE(k);
       long sides = 0;
@@ -279,7 +281,8 @@ TEST_CASE("rind twice: the same rule on a rind") {
 
 TEST_CASE("wireframe: genus E - V + 1 on every modeling mesh") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const FaceSides s = face_sides(mesh);
     const long v = long(mesh.num_vertices()), e = long(mesh.num_edges()), f = long(mesh.num_faces());
     // Inset rings on the surface faces (n_s sides in all): V+n_s, E+2n_s, F+n_s; the crust doubles that; a
@@ -323,7 +326,8 @@ TEST_CASE("wireframe: the cube by hand") {
 
 TEST_CASE("columns: counts and genus E - V + 1 on every modeling mesh") {
   for (const auto& [name, mesh] : test::modeling_meshes()) {
-    CAPTURE(name);
+    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+    CAPTURE(name_);
     const long v = long(mesh.num_vertices()), e = long(mesh.num_edges());
     for (long n : {4L, 3L, 6L}) {
       CAPTURE(n);
