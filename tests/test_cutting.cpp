@@ -23,11 +23,9 @@
 #include <dlfl/history/oplog.h>
 #include <dlfl/mesh_hash.h>
 #include <dlfl/navigation.h>
-#include <dlfl/operations/chamfer_edge.h>
-#include <dlfl/operations/cut_face.h>
+#include <dlfl/operations/cutting.h>
 #include <dlfl/operations/operation.h>
 #include <dlfl/operations/plane_cut.h>
-#include <dlfl/operations/truncate_vertex.h>
 
 #include "modeling_checks.h"
 #include "modeling_meshes.h"

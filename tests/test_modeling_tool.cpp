@@ -72,18 +72,34 @@ TEST_CASE("tool: dlfl edit extrudes a face of the cube (V+4, E+8, F+4)") {
   CHECK(!std::filesystem::exists(refused));
 }
 
-TEST_CASE("tool: the bundled genus-3 session replays to a genus-3 mesh of the hand-counted size") {
-  // Cube 8/12/6; extrude_face (cubical, a quad): V+4, E+8, F+4 -> 12/20/10; three connect_faces between
-  // quads with 8 segments: each V+4*7, E+4*8+4*7, F-2+4*8 -> 96/200/100; two Catmull-Clark steps of an
-  // all-quad mesh (V+E+F, 2E+4F, 4F) -> 396/800/400 -> 1596/3200/1600. Euler characteristic -4: genus 3.
-  const auto out = scratch("genus3.obj");
-  const Run r = run("replay " + example("genus3_handles.log.json") + " -o '" + out.string() + "'");
-  REQUIRE_MESSAGE(r.exit_code == 0, r.err);
-  const auto info = nlohmann::json::parse(run("info '" + out.string() + "'").out);
-  CHECK(info["vertices"] == 1596);
-  CHECK(info["edges"] == 3200);
-  CHECK(info["faces"] == 1600);
-  CHECK(info["genus"] == nlohmann::json::array({3}));
-  CHECK(info["valid"] == true);
+TEST_CASE("tool: the bundled modelling sessions replay to meshes of the hand-counted size and genus") {
+  struct Session {
+    const char* log;
+    long vertices, edges, faces, genus;
+  };
+  const Session sessions[] = {
+      // Cube 8/12/6; extrude_face (cubical, a quad): V+4, E+8, F+4 -> 12/20/10; three connect_faces between
+      // quads with 8 segments: each V+4*7, E+4*8+4*7, F-2+4*8 -> 96/200/100; two Catmull-Clark steps of an
+      // all-quad mesh (V+E+F, 2E+4F, 4F) -> 396/800/400 -> 1596/3200/1600. Euler characteristic -4: genus 3.
+      {"genus3_handles.log.json", 1596, 3200, 1600, 3},
+      // Cube, two Catmull-Clark steps -> 26/48/24 -> 98/192/96; rind with k = 6 quads: V+V, E+E+4k,
+      // F+F+2k -> 196/408/204 (Euler characteristic 2*2 - 2*6 = -8); Catmull-Clark -> 808/1632/816: genus 5.
+      {"rind_lantern.log.json", 808, 1632, 816, 5},
+      // Dodecahedron 20/30/12; wireframe: 2V+4E, 12E, 6E -> 160/360/180 (genus E - V + 1 = 11);
+      // Catmull-Clark of those quads -> 700/1440/720.
+      {"wireframe_dodecahedron.log.json", 700, 1440, 720, 11},
+  };
+  for (const Session& session : sessions) {
+    CAPTURE(session.log);
+    const auto out = scratch(std::string(session.log) + ".obj");
+    const Run r = run("replay " + example(session.log) + " -o '" + out.string() + "'");
+    REQUIRE_MESSAGE(r.exit_code == 0, r.err);
+    const auto info = nlohmann::json::parse(run("info '" + out.string() + "'").out);
+    CHECK(info["vertices"] == session.vertices);
+    CHECK(info["edges"] == session.edges);
+    CHECK(info["faces"] == session.faces);
+    CHECK(info["genus"] == nlohmann::json::array({session.genus}));
+    CHECK(info["valid"] == true);
+  }
 }
 #endif

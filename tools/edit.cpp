@@ -10,7 +10,6 @@
 #include "commands.h"
 #include "editor_session.h"
 #include "feedback.h"
-#include "file_checks.h"
 
 namespace dlfl::tool {
 
@@ -18,30 +17,24 @@ Action add_edit(CLI::App& app) {
   auto* cmd = app.add_subcommand(
       "edit", "Apply operations (dlfl ops lists them) in order, writing nothing unless all succeed");
   struct Args {
-    std::string in, out, log;
+    EditorFiles files;
     std::vector<std::string> ops;
-    bool self_contained = false;
-    bool ascii = false;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("IN", a->in, "Input mesh (.obj, .off, .ply, .json)")->required();
-  cmd->add_option("-o,--output", a->out, "Output mesh (format by extension; .json keeps every handle)")
-      ->required();
+  cmd->add_option("IN", a->files.in, "Input mesh (.obj, .off, .ply, .json)")->required();
+  add_output_options(cmd, a->files, "Output mesh (format by extension; .json keeps every handle)",
+                     "Write PLY as ASCII instead of binary");
   cmd->add_option(
          "--op", a->ops,
          "An operation: 'NAME key=value ...' (repeatable, applied in order). A handle is its number, "
          "a point x,y,z, a list a,b,c; params.KEY=VALUE sets a scheme parameter of subdivide")
       ->required();
-  cmd->add_option("--log", a->log, "Write the operation log (JSON) here");
-  cmd->add_flag("--self-contained", a->self_contained,
-                "Embed the input mesh in the log so it replays anywhere");
-  cmd->add_flag("--ascii", a->ascii, "Write PLY as ASCII instead of binary");
   return [a] {
-    check_files({{"IN", a->in}}, {{"-o", a->out}, {"--log", a->log}});
+    check_editor_files(a->files);
     // Every op string is parsed before the input is read: a typo costs nothing.
     std::vector<std::pair<std::string, Params>> ops;
     for (const auto& text : a->ops) ops.push_back(parse_operation_text(text));
-    Editor editor = open_editor(a->in, a->self_contained);
+    Editor editor = open_editor(a->files);
     for (std::size_t i = 0; i < ops.size(); ++i) {
       try {
         const auto start = std::chrono::steady_clock::now();
@@ -61,7 +54,7 @@ Action add_edit(CLI::App& app) {
         throw InvalidArgument("--op " + std::to_string(i + 1) + " (" + ops[i].first + "): " + e.what());
       }
     }
-    save_editor(editor, a->out, a->ascii, a->log);
+    save_editor(editor, a->files);
     return ok;
   };
 }

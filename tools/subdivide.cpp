@@ -78,19 +78,19 @@ double plan_run(const Mesh& input, const std::string& scheme, const Params& para
 template <class Args>
 Exit subdivide_cells(const Args& a) {
   if (a.scheme != "mlca") {
-    throw InvalidArgument(a.in + " is a cell complex; only -s mlca subdivides cell complexes, not '" +
+    throw InvalidArgument(a.files.in + " is a cell complex; only -s mlca subdivides cell complexes, not '" +
                           a.scheme + "'");
   }
   if (!a.params.empty()) throw InvalidArgument("mlca takes no parameters");
-  if (!a.log.empty() || a.self_contained) {
+  if (!a.files.log.empty() || a.files.self_contained) {
     throw InvalidArgument("operation logs record DLFL meshes; --log is not available for a cell complex");
   }
-  const CellComplex input = read_cell_complex(a.in);
-  check_cell_complex_output(input, a.out);  // the output format, before the work (dimensions are kept)
+  const CellComplex input = read_cell_complex(a.files.in);
+  check_cell_complex_output(input, a.files.out);  // the output format, before the work (dimensions are kept)
   const CellComplex result = mlca_subdivide(input, a.iterations);
   CellWriteOptions write;
-  write.binary_vtk = !a.ascii;
-  write_cell_complex(result, a.out, write);
+  write.binary_vtk = !a.files.ascii;
+  write_cell_complex(result, a.files.out, write);
   return ok;
 }
 
@@ -100,14 +100,13 @@ Action add_subdivide(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("subdivide", "Apply a subdivision scheme, optionally recording an operation log");
   struct Args {
-    std::string in, out, scheme, log;
+    EditorFiles files;
+    std::string scheme;
     int iterations = 1;
     std::vector<std::string> params;
-    bool self_contained = false;
-    bool ascii = false;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("IN", a->in,
+  cmd->add_option("IN", a->files.in,
                   "Input mesh (.obj, .off, .ply, .json), or cell complex (.vtk, .obj with p or l lines) for "
                   "-s mlca")
       ->required();
@@ -118,27 +117,24 @@ Action add_subdivide(CLI::App& app) {
   cmd->add_option("--param", a->params,
                   "Scheme parameter NAME=VALUE (repeatable), read as the parameter's type: t=0.5, "
                   "center=0,0,0, random=true, pattern=H4P4 ('dlfl schemes NAME' lists them)");
-  cmd->add_option("-o,--output", a->out, "Output mesh (format by extension)")->required();
-  cmd->add_option("--log", a->log, "Write the operation log (JSON) here");
-  cmd->add_flag("--self-contained", a->self_contained,
-                "Embed the input mesh in the log so it replays anywhere");
-  cmd->add_flag("--ascii", a->ascii, "Write PLY or VTK as ASCII instead of binary");
+  add_output_options(cmd, a->files, "Output mesh (format by extension)",
+                     "Write PLY or VTK as ASCII instead of binary");
   return [a] {
-    check_files({{"IN", a->in}}, {{"-o", a->out}, {"--log", a->log}});
-    if (is_cell_complex_file(a->in)) return subdivide_cells(*a);
+    check_editor_files(a->files);
+    if (is_cell_complex_file(a->files.in)) return subdivide_cells(*a);
     Params params;
     for (const auto& p : a->params) {
       auto [name, value] = parse_assignment(p);
       if (params.has(name)) throw ParameterError("parameter " + name + " given twice", name);
       params[name] = std::move(value);
     }
-    Editor editor = open_editor(a->in, a->self_contained);
+    Editor editor = open_editor(a->files);
     const double predicted_faces = plan_run(editor.mesh(), a->scheme, params, a->iterations);
     {
       StepReport report(a->iterations, predicted_faces);
       editor.subdivide(a->scheme, params, a->iterations);
     }
-    save_editor(editor, a->out, a->ascii, a->log);
+    save_editor(editor, a->files);
     return ok;
   };
 }

@@ -38,14 +38,12 @@
 #include <dlfl/mesh_data.h>
 #include <dlfl/mesh_hash.h>
 #include <dlfl/navigation.h>
-#include <dlfl/operations/chamfer_edge.h>
 #include <dlfl/operations/collapse_edge.h>
 #include <dlfl/operations/columns.h>
 #include <dlfl/operations/connect_edges.h>
 #include <dlfl/operations/connect_faces.h>
 #include <dlfl/operations/crust.h>
-#include <dlfl/operations/cut_face.h>
-#include <dlfl/operations/cut_result.h>
+#include <dlfl/operations/cutting.h>
 #include <dlfl/operations/dissolve_coplanar.h>
 #include <dlfl/operations/divide_edge.h>
 #include <dlfl/operations/extrude_face.h>
@@ -69,7 +67,6 @@
 #include <dlfl/operations/transaction.h>
 #include <dlfl/operations/transform.h>
 #include <dlfl/operations/triangulate.h>
-#include <dlfl/operations/truncate_vertex.h>
 #include <dlfl/operations/wireframe.h>
 #include <dlfl/parameters.h>
 #include <dlfl/polygon_soup.h>

@@ -77,14 +77,8 @@ void check_collapse_edge(const Mesh& m, EdgeId e, const CollapseEdgeOptions& opt
     const VertexId x = triangle_apex(m, e, side);
     if (x.valid() && std::find(apexes.begin(), apexes.end(), x) == apexes.end()) apexes.push_back(x);
   }
-  if (common.size() > apexes.size()) {
-    const auto extra = std::find_if(common.begin(), common.end(), [&](VertexId w) {
-      return std::find(apexes.begin(), apexes.end(), w) == apexes.end();
-    });
-    refuse_non_manifold("the end vertices share " + detail::count_of(common.size(), "neighbour") +
-                        ", the link condition allows " + std::to_string(apexes.size()) + "; the edges to " +
-                        to_string(*extra) + " would double up");
-  }
+  const std::string doubled = detail::doubled_edges(common, apexes, "the end vertices");
+  if (!doubled.empty()) refuse_non_manifold(doubled);
 
   // Faces: leaving out the two corner pairs along e (s0 with next(s0), s1 with next(s1)), no face may keep a
   // corner at u and one at v.
@@ -159,10 +153,7 @@ std::vector<OperationSpec> collapse_edge_operation_specs() {
       "V-1, E-1, F+0; cleanup with k triangles beside the edge: V-1, E-1-k, F-k",
       [](Transaction& tx, const Params& p) {
         const CollapseEdgeResult r = collapse_edge(tx, p.handle<EdgeId>("edge"), options_of(p));
-        Params out;
-        out["vertex"] = r.vertex;
-        out["two_gons_removed"] = r.two_gons_removed;
-        return out;
+        return Params{{"vertex", r.vertex}, {"two_gons_removed", r.two_gons_removed}};
       },
       [](const Mesh& m, Params& p) { check_collapse_edge(m, p.handle<EdgeId>("edge"), options_of(p)); })};
 }

@@ -78,10 +78,7 @@ std::vector<OperationSpec> connect_edges_operation_specs() {
       [](Transaction& tx, const Params& p) {
         const ConnectEdgesResult r =
             connect_edges(tx, p.handle<CornerId>("corner1"), p.handle<CornerId>("corner2"));
-        Params out;
-        out["edges"] = std::vector<EdgeId>(r.edges.begin(), r.edges.end());
-        out["face"] = r.face;
-        return out;
+        return Params{{"edges", std::vector<EdgeId>(r.edges.begin(), r.edges.end())}, {"face", r.face}};
       },
       [](const Mesh& m, Params& p) {
         check_connect_edges(m, p.handle<CornerId>("corner1"), p.handle<CornerId>("corner2"));

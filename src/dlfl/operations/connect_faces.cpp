@@ -269,11 +269,7 @@ std::vector<OperationSpec> connect_faces_operation_specs() {
       [](Transaction& tx, const Params& p) {
         const ConnectFacesResult r =
             connect_faces(tx, p.handle<FaceId>("face1"), p.handle<FaceId>("face2"), options_of(p));
-        Params out;
-        out["faces"] = r.faces;
-        out["vertices"] = r.vertices;
-        out["edge"] = r.edge;
-        return out;
+        return Params{{"faces", r.faces}, {"vertices", r.vertices}, {"edge", r.edge}};
       },
       [](const Mesh& m, Params& p) {
         const TubeEnds ends =

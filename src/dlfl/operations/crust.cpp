@@ -41,9 +41,7 @@ std::vector<OperationSpec> crust_operation_specs() {
            .range(0.0, std::numeric_limits<double>::infinity(), true, false)},
       "closed: V+V, E+E, F+F; each hole face of h sides adds E+h, F+h-2",
       [](Transaction& tx, const Params& p) {
-        Params out;
-        out["vertices"] = crust(tx, {p.number("thickness")});
-        return out;
+        return Params{{"vertices", crust(tx, {p.number("thickness")})}};
       },
       [](const Mesh& mesh, Params& p) { check_crust(mesh, {p.number("thickness")}); })};
 }

@@ -139,11 +139,9 @@ std::vector<OperationSpec> dissolve_coplanar_operation_specs() {
       "V-(d+j), E-(k+d+j), F-k: k merges, d dangling edges peeled, j vertices joined",
       [](Transaction& tx, const Params& p) {
         const DissolveCoplanarResult r = dissolve_coplanar(tx, {p.number("angle_degrees")});
-        Params out;
-        out["edges_merged"] = r.edges_merged;
-        out["edges_peeled"] = r.edges_peeled;
-        out["vertices_joined"] = r.vertices_joined;
-        return out;
+        return Params{{"edges_merged", r.edges_merged},
+                      {"edges_peeled", r.edges_peeled},
+                      {"vertices_joined", r.vertices_joined}};
       },
       [](const Mesh&, Params& p) { check_dissolve_coplanar({p.number("angle_degrees")}); })};
 }

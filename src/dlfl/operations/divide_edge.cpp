@@ -48,10 +48,7 @@ std::vector<OperationSpec> divide_edge_operation_specs() {
       "V+(s-1), E+(s-1), F+0",
       [](Transaction& tx, const Params& p) {
         const DivideEdgeResult r = divide_edge(tx, p.handle<EdgeId>("edge"), p.integer("segments"));
-        Params out;
-        out["vertices"] = r.vertices;
-        out["edges"] = r.edges;
-        return out;
+        return Params{{"vertices", r.vertices}, {"edges", r.edges}};
       },
       [](const Mesh& m, Params& p) {
         check_divide_edge(m, p.handle<EdgeId>("edge"), p.integer("segments"));

@@ -34,9 +34,7 @@ std::vector<OperationSpec> euler_operation_specs() {
       "create_vertex", "CREATEVERTEX: a new point sphere (one vertex, one face of one corner, no edge)",
       {param("position", ParamType::point, "where the vertex is")}, "V+1, E+0, F+1",
       [](Transaction& tx, const Params& p) {
-        Params out;
-        out["vertex"] = tx.create_vertex(p.point("position"));
-        return out;
+        return Params{{"vertex", tx.create_vertex(p.point("position"))}};
       }));
 
   ops.push_back(vertex_removal("delete_vertex", "inverse of CREATEVERTEX: removes a point sphere (no edge)",
@@ -77,9 +75,7 @@ std::vector<OperationSpec> euler_operation_specs() {
       "V+1, E+1, F+0", [](Transaction& tx, const Params& p) {
         const EdgeId e = p.handle<EdgeId>("edge");
         const glm::dvec3 at = p.has("position") ? p.point("position") : midpoint(tx.mesh(), e);
-        Params out;
-        out["vertex"] = tx.subdivide_edge(e, at);
-        return out;
+        return Params{{"vertex", tx.subdivide_edge(e, at)}};
       }));
 
   ops.push_back(vertex_removal("unsubdivide_edge", "inverse of subdivide_edge: removes a 2-valent vertex",
@@ -100,10 +96,7 @@ std::vector<OperationSpec> euler_operation_specs() {
       {param("positions", ParamType::points, "the polygon's corners, at least 2")}, "V+N, E+N, F+2",
       [](Transaction& tx, const Params& p) {
         const FaceManifold fm = tx.create_face_manifold(p.get("positions").as_points());
-        Params out;
-        out["front"] = fm.front;
-        out["back"] = fm.back;
-        return out;
+        return Params{{"front", fm.front}, {"back", fm.back}};
       },
       [](const Mesh&, Params& p) {
         if (p.get("positions").as_points().size() < 2) {

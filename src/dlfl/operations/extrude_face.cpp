@@ -364,16 +364,6 @@ ExtrudeFaceResult build(Transaction& tx, const FacePlan& fp) {
   return result;
 }
 
-std::vector<ExtrudeFaceResult> extrude_all(Transaction& tx, std::span<const FaceId> faces,
-                                           const ExtrudeFaceOptions& options, std::string_view parameter) {
-  // Each face's extrusion touches only its own face and new elements, so every plan made beforehand holds.
-  const std::vector<FacePlan> plans = planned(tx.mesh(), faces, options, parameter);
-  std::vector<ExtrudeFaceResult> results;
-  results.reserve(plans.size());
-  for (const FacePlan& fp : plans) results.push_back(build(tx, fp));
-  return results;
-}
-
 ExtrudeStyle style_named(const std::string& name) {
   for (const auto& s : style_names) {
     if (s.name == name) return s.style;
@@ -402,12 +392,13 @@ std::string_view to_string(ExtrudeStyle style) {
 }
 
 ExtrudeFaceResult extrude_face(Transaction& tx, FaceId face, const ExtrudeFaceOptions& options) {
-  return extrude_all(tx, std::span<const FaceId>(&face, 1), options, "face").front();
+  return extrude_faces(tx, std::span<const FaceId>(&face, 1), options, "face").front();
 }
 
 std::vector<ExtrudeFaceResult> extrude_faces(Transaction& tx, std::span<const FaceId> faces,
-                                             const ExtrudeFaceOptions& options) {
-  return extrude_all(tx, faces, options, "faces");
+                                             const ExtrudeFaceOptions& options,
+                                             std::string_view face_parameter) {
+  return detail::build_each(tx, planned(tx.mesh(), faces, options, face_parameter), &build);
 }
 
 void check_extrude_faces(const Mesh& mesh, std::span<const FaceId> faces, const ExtrudeFaceOptions& options,
@@ -420,11 +411,11 @@ namespace detail {
 std::vector<OperationSpec> extrude_face_operation_specs() {
   std::vector<std::string> styles;
   for (const auto& s : style_names) styles.emplace_back(s.name);
-  return {edit_operation(
-      "extrude_face",
+  return {face_operation(
+      op_name,
       "moves a face out along a direction and joins it to where it was, in one of TopMod's extrusion styles",
-      {face_param("the face to extrude"), faces_param("faces to extrude, each on its own"),
-       param("distance", ParamType::number, 1.0, "how far the face moves (in all, whatever the segments)"),
+      "the face to extrude", "faces to extrude, each on its own",
+      {param("distance", ParamType::number, 1.0, "how far the face moves (in all, whatever the segments)"),
        param("segments", ParamType::integer, 1, "how many times the style's unit is built along the way")
            .in(1, max_segments),
        param("rotate_degrees", ParamType::number, 0.0,
@@ -439,9 +430,8 @@ std::vector<OperationSpec> extrude_face_operation_specs() {
       "F+2n*s; stellate: V+1, E+n, F+n-1; double-stellate: V+n+1, E+4n, F+3n-1; dodecahedral: V+3n*s, "
       "E+5n*s, "
       "F+2n*s; icosahedral: V+3n*s, E+9n*s, F+6n*s; dome: V+5n+1, E+11n, F+6n-1",
-      [](Transaction& tx, const Params& p) {
-        const FaceSelection selection = selected_faces(op_name, p);
-        const auto results = extrude_all(tx, selection.faces, options_of(p), selection.parameter);
+      [](Transaction& tx, const FaceSelection& selection, const Params& p) {
+        const auto results = extrude_faces(tx, selection.faces, options_of(p), selection.parameter);
         std::vector<FaceId> ends;
         std::vector<VertexId> apexes;
         for (const auto& r : results) {
@@ -449,19 +439,11 @@ std::vector<OperationSpec> extrude_face_operation_specs() {
           if (r.apex.valid()) apexes.push_back(r.apex);
         }
         Params out;
-        const bool one = selection.parameter == "face";
-        if (!ends.empty()) {
-          out["faces"] = ends;
-          if (one) out["face"] = ends.front();
-        }
-        if (!apexes.empty()) {
-          out["vertices"] = apexes;
-          if (one) out["vertex"] = apexes.front();
-        }
+        put_made(out, "faces", "face", ends, selection.parameter == "face");
+        put_made(out, "vertices", "vertex", apexes, selection.parameter == "face");
         return out;
       },
-      [](const Mesh& mesh, Params& p) {
-        const FaceSelection selection = selected_faces(op_name, p);
+      [](const Mesh& mesh, const FaceSelection& selection, const Params& p) {
         planned(mesh, selection.faces, options_of(p), selection.parameter);
       })};
 }

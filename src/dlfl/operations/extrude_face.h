@@ -76,9 +76,10 @@ struct ExtrudeFaceResult {
 ExtrudeFaceResult extrude_face(Transaction& tx, FaceId face, const ExtrudeFaceOptions& options = {});
 
 /// Extrudes each face on its own, as extrude_face would one after the other (the counts add up); refusals
-/// of a face name "faces". The results are in the order of `faces`.
+/// of a face name `face_parameter`. The results are in the order of `faces`.
 std::vector<ExtrudeFaceResult> extrude_faces(Transaction& tx, std::span<const FaceId> faces,
-                                             const ExtrudeFaceOptions& options = {});
+                                             const ExtrudeFaceOptions& options = {},
+                                             std::string_view face_parameter = "faces");
 
 /// The checks of extrude_faces, with refusals of the faces naming `face_parameter`: an empty list, a face
 /// listed twice, a removed, hole or point-sphere face, a face with no normal (a zero Newell vector) when no

@@ -90,9 +90,7 @@ std::vector<OperationSpec> flip_edge_operation_specs() {
            .one_of({"forward", "backward"})},
       "V+0, E+0, F+0",
       [](Transaction& tx, const Params& p) {
-        Params out;
-        out["edge"] = flip_edge(tx, p.handle<EdgeId>("edge"), direction_of(p));
-        return out;
+        return Params{{"edge", flip_edge(tx, p.handle<EdgeId>("edge"), direction_of(p))}};
       },
       [](const Mesh& m, Params& p) { check_flip_edge(m, p.handle<EdgeId>("edge"), direction_of(p)); })};
 }

@@ -64,30 +64,21 @@ std::vector<FaceCopy> planned(const Mesh& mesh, std::span<const FaceId> faces, c
   return out;
 }
 
-std::vector<FaceId> inset_all(Transaction& tx, std::span<const FaceId> faces, const InsetFaceOptions& options,
-                              std::string_view parameter) {
-  // An inset touches only its own face and new elements: every copy planned beforehand holds.
-  const std::vector<FaceCopy> copies = planned(tx.mesh(), faces, options, parameter);
-  std::vector<FaceId> out;
-  out.reserve(copies.size());
-  for (const FaceCopy& copy : copies) {
-    const auto corners = detail::corners_from(tx.mesh(), tx.mesh().first_corner(copy.face));
-    out.push_back(tx.mesh().face(detail::grow_quad_ring(tx, corners, copy.positions).front()));
-  }
-  return out;
-}
-
 InsetFaceOptions options_of(const Params& p) { return {p.number("amount"), p.number("depth")}; }
 
 }  // namespace
 
 FaceId inset_face(Transaction& tx, FaceId face, const InsetFaceOptions& options) {
-  return inset_all(tx, std::span<const FaceId>(&face, 1), options, "face").front();
+  return inset_faces(tx, std::span<const FaceId>(&face, 1), options, "face").front();
 }
 
 std::vector<FaceId> inset_faces(Transaction& tx, std::span<const FaceId> faces,
-                                const InsetFaceOptions& options) {
-  return inset_all(tx, faces, options, "faces");
+                                const InsetFaceOptions& options, std::string_view face_parameter) {
+  return detail::build_each(
+      tx, planned(tx.mesh(), faces, options, face_parameter), [](Transaction& tx, const FaceCopy& copy) {
+        const auto corners = detail::corners_from(tx.mesh(), tx.mesh().first_corner(copy.face));
+        return tx.mesh().face(detail::grow_quad_ring(tx, corners, copy.positions).front());
+      });
 }
 
 void check_inset_faces(const Mesh& mesh, std::span<const FaceId> faces, const InsetFaceOptions& options,
@@ -98,24 +89,21 @@ void check_inset_faces(const Mesh& mesh, std::span<const FaceId> faces, const In
 namespace detail {
 
 std::vector<OperationSpec> inset_face_operation_specs() {
-  return {edit_operation(
-      "inset_face", "a smaller copy of a face inside it, joined to it by a ring of quads",
-      {face_param("the face to inset"), faces_param("faces to inset, each on its own"),
-       param("amount", ParamType::number, 0.25,
+  return {face_operation(
+      op_name, "a smaller copy of a face inside it, joined to it by a ring of quads", "the face to inset",
+      "faces to inset, each on its own",
+      {param("amount", ParamType::number, 0.25,
              "the share of the way each corner moves towards the centroid: c + (1 - amount)(p - c)")
            .in_open(0.0, 1.0),
        param("depth", ParamType::number, 0.0, "how far the copy then moves along the face's normal")},
       "per face of n sides: V+n, E+2n, F+n",
-      [](Transaction& tx, const Params& p) {
-        const FaceSelection selection = selected_faces(op_name, p);
-        const std::vector<FaceId> copies = inset_all(tx, selection.faces, options_of(p), selection.parameter);
+      [](Transaction& tx, const FaceSelection& selection, const Params& p) {
         Params out;
-        out["faces"] = copies;
-        if (selection.parameter == "face") out["face"] = copies.front();
+        put_made(out, "faces", "face", inset_faces(tx, selection.faces, options_of(p), selection.parameter),
+                 selection.parameter == "face");
         return out;
       },
-      [](const Mesh& mesh, Params& p) {
-        const FaceSelection selection = selected_faces(op_name, p);
+      [](const Mesh& mesh, const FaceSelection& selection, const Params& p) {
         planned(mesh, selection.faces, options_of(p), selection.parameter);
       })};
 }

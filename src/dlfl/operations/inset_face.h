@@ -28,9 +28,10 @@ struct InsetFaceOptions {
 FaceId inset_face(Transaction& tx, FaceId face, const InsetFaceOptions& options = {});
 
 /// Insets each face on its own, as inset_face would one after the other (the counts add up); refusals of a
-/// face name "faces". The copies are in the order of `faces`.
+/// face name `face_parameter`. The copies are in the order of `faces`.
 std::vector<FaceId> inset_faces(Transaction& tx, std::span<const FaceId> faces,
-                                const InsetFaceOptions& options = {});
+                                const InsetFaceOptions& options = {},
+                                std::string_view face_parameter = "faces");
 
 /// The checks of inset_faces, with refusals of the faces naming `face_parameter`: an empty list, a face
 /// listed twice, a removed, hole or point-sphere face, a face with no normal when depth is not 0; an amount

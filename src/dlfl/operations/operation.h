@@ -55,6 +55,11 @@ OperationSpec replace_operation(std::string name, std::string doc, std::vector<P
                                 ReplaceFunction replace, CheckFunction check = {});
 OperationSpec history_operation(std::string name, std::string doc, std::vector<ParamSpec> params = {});
 
+/// An edit operation without parameters over the whole mesh that reports how many elements it changed, as
+/// the integer output `output` (remove_2gons: "two_gons_removed").
+OperationSpec counting_operation(std::string name, std::string doc, std::string counts, std::string output,
+                                 std::function<std::size_t(Transaction& tx)> run);
+
 /// Every registered operation, sorted by name.
 std::span<const OperationSpec> operations();
 

@@ -43,6 +43,14 @@ OperationSpec edit_operation(std::string name, std::string doc, std::vector<Para
   return op;
 }
 
+OperationSpec counting_operation(std::string name, std::string doc, std::string counts, std::string output,
+                                 std::function<std::size_t(Transaction& tx)> run) {
+  return edit_operation(std::move(name), std::move(doc), {}, std::move(counts),
+                        [output = std::move(output), run = std::move(run)](Transaction& tx, const Params&) {
+                          return Params{{output, run(tx)}};
+                        });
+}
+
 OperationSpec replace_operation(std::string name, std::string doc, std::vector<ParamSpec> params,
                                 ReplaceFunction replace, CheckFunction check) {
   OperationSpec op =

@@ -85,11 +85,9 @@ std::vector<OperationSpec> planarize_operation_specs() {
       "V+0, E+0, F+0",
       [](Transaction& tx, const Params& p) {
         const PlanarizeResult r = planarize(tx, {static_cast<int>(p.integer("iterations"))});
-        Params out;
-        out["nonplanarity_before"] = r.nonplanarity_before;
-        out["nonplanarity_after"] = r.nonplanarity_after;
-        out["iterations_run"] = r.iterations_run;
-        return out;
+        return Params{{"nonplanarity_before", r.nonplanarity_before},
+                      {"nonplanarity_after", r.nonplanarity_after},
+                      {"iterations_run", r.iterations_run}};
       },
       [](const Mesh&, Params& p) { check_planarize({static_cast<int>(p.integer("iterations"))}); })};
 }

@@ -254,11 +254,7 @@ std::vector<OperationSpec> plane_cut_operation_specs() {
       "for c crossed edges and s section edges: V+c, E+c+s, F+s",
       [](Transaction& tx, const Params& p) {
         const PlaneCutResult cut = plane_cut(tx, options_of(p));
-        Params out;
-        out["vertices"] = cut.vertices;
-        out["edges"] = cut.edges;
-        out["holes"] = cut.holes;
-        return out;
+        return Params{{"vertices", cut.vertices}, {"edges", cut.edges}, {"holes", cut.holes}};
       },
       [](const Mesh& mesh, Params& p) { check_plane_cut(mesh, options_of(p)); })};
 }

@@ -49,9 +49,8 @@ std::vector<OperationSpec> rind_operation_specs() {
       "closed: V+V, E+E+sum n, F+F+sum (n-2) over the k faces: Euler characteristic 2chi-2k",
       [](Transaction& tx, const Params& p) {
         const FaceSelection selection = selected_faces(op_name, p);
-        Params out;
-        out["vertices"] = rind_faces(tx, selection.faces, {p.number("thickness")}, selection.parameter);
-        return out;
+        return Params{
+            {"vertices", rind_faces(tx, selection.faces, {p.number("thickness")}, selection.parameter)}};
       },
       [](const Mesh& mesh, Params& p) {
         const FaceSelection selection = selected_faces(op_name, p);

@@ -44,11 +44,8 @@ std::vector<OperationSpec> spheralize_operation_specs() {
       "moves every vertex along the ray from the vertices' centroid onto the sphere through the farthest one",
       {}, "V+0, E+0, F+0", [](Transaction& tx, const Params&) {
         const SpheralizeResult r = spheralize(tx);
-        Params out;
-        out["center"] = r.center;
-        out["radius"] = r.radius;
-        out["vertices_at_center"] = r.vertices_at_center;
-        return out;
+        return Params{
+            {"center", r.center}, {"radius", r.radius}, {"vertices_at_center", r.vertices_at_center}};
       })};
 }
 

@@ -108,14 +108,8 @@ void check_splice_corners(const Mesh& m, CornerId c1, CornerId c2, const SpliceC
         std::find(apexes.begin(), apexes.end(), m.vertex(m.next(c2))) == apexes.end())
       apexes.push_back(m.vertex(m.next(c2)));
   }
-  if (common.size() > apexes.size()) {
-    const auto extra = std::find_if(common.begin(), common.end(), [&](VertexId w) {
-      return std::find(apexes.begin(), apexes.end(), w) == apexes.end();
-    });
-    refuse_non_manifold("the two vertices share " + detail::count_of(common.size(), "neighbour") +
-                        ", the link condition allows " + std::to_string(apexes.size()) + "; the edges to " +
-                        to_string(*extra) + " would double up");
-  }
+  const std::string doubled = detail::doubled_edges(common, apexes, "the two vertices");
+  if (!doubled.empty()) refuse_non_manifold(doubled);
 
   // Faces: apart from c1 and c2, no face (as it will be) may keep a corner at u and one at v.
   const FaceAfterInsert face_after(m, c1, c2);
@@ -166,10 +160,8 @@ std::vector<OperationSpec> splice_corners_operation_specs() {
            .optional("the midpoint of the two vertices")},
       "one face: V-1, E+0, F+1; two faces: V-1, E+0, F-1",
       [](Transaction& tx, const Params& p) {
-        Params out;
-        out["vertex"] =
-            splice_corners(tx, p.handle<CornerId>("corner1"), p.handle<CornerId>("corner2"), options_of(p));
-        return out;
+        return Params{{"vertex", splice_corners(tx, p.handle<CornerId>("corner1"),
+                                                p.handle<CornerId>("corner2"), options_of(p))}};
       },
       [](const Mesh& m, Params& p) {
         check_splice_corners(m, p.handle<CornerId>("corner1"), p.handle<CornerId>("corner2"), options_of(p));

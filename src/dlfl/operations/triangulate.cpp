@@ -203,9 +203,7 @@ std::vector<OperationSpec> triangulate_operation_specs() {
       [](Transaction& tx, const Params& p) {
         const TriangulateResult r =
             p.has("faces") ? triangulate(tx, p.handles<FaceId>("faces")) : triangulate_all(tx);
-        Params out;
-        out["faces"] = r.faces;
-        return out;
+        return Params{{"faces", r.faces}};
       },
       [](const Mesh& m, Params& p) {
         if (p.has("faces")) check_triangulate(m, p.handles<FaceId>("faces"));

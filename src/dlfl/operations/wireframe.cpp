@@ -108,9 +108,7 @@ std::vector<OperationSpec> wireframe_operation_specs() {
            .range(0.0, infinity, true, false)},
       "closed: V'=2V+4E, E'=12E, F'=6E (Euler characteristic 2V-2E)",
       [](Transaction& tx, const Params& p) {
-        Params out;
-        out["vertices"] = wireframe(tx, {p.number("thickness"), p.number("width")});
-        return out;
+        return Params{{"vertices", wireframe(tx, {p.number("thickness"), p.number("width")})}};
       },
       [](const Mesh& mesh, Params& p) {
         check(mesh, {p.number("thickness"), p.number("width")});

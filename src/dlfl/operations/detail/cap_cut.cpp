@@ -173,4 +173,12 @@ ParamSpec offset_param() {
       .in_open(0.0, 0.5);
 }
 
+Params cut_outputs(const CutResult& cut, bool one_element) {
+  Params out;
+  out["faces"] = cut.faces;
+  out["vertices"] = cut.vertices;
+  if (one_element) out["face"] = cut.faces.front();
+  return out;
+}
+
 }  // namespace dlfl::detail

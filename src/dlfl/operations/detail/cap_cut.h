@@ -16,7 +16,9 @@
 #include <vector>
 
 #include <dlfl/mesh.h>
-#include <dlfl/operations/cut_result.h>
+#include <dlfl/operations/cutting.h>
+#include <dlfl/operations/detail/handle_selection.h>
+#include <dlfl/operations/operation.h>
 #include <dlfl/operations/transaction.h>
 #include <dlfl/parameters.h>
 
@@ -52,5 +54,52 @@ CutResult cut_caps(Transaction& tx, std::string_view op, std::string_view parame
 
 /// The parameter that holds the offset, for the three operations.
 ParamSpec offset_param();
+
+/// The outputs of a registered cut: `faces`, `vertices` and, when one element was given, `face`.
+Params cut_outputs(const CutResult& cut, bool one_element);
+
+/// One of the three cutting operations: its name, its two element parameters (`one` element or a list of
+/// `many`, exactly one of them given) and how the elements it is given become caps, refusing those it cannot
+/// cut with a ParameterError naming the parameter. The library functions and the registered operation of
+/// each are this, with its own `caps_of`.
+template <class H>
+struct CapCutter {
+  using CapsOf = std::vector<Cap> (*)(const Mesh& mesh, std::span<const H> elements,
+                                      std::string_view parameter);
+  std::string_view op;
+  std::string_view one;
+  std::string_view many;
+  CapsOf caps_of;
+
+  CutResult cut(Transaction& tx, std::span<const H> elements, double offset,
+                std::string_view parameter) const {
+    const std::vector<Cap> caps = caps_of(tx.mesh(), elements, parameter);
+    return cut_caps(tx, op, parameter, caps, offset);
+  }
+
+  void check(const Mesh& mesh, std::span<const H> elements, double offset, std::string_view parameter) const {
+    check_caps(mesh, op, parameter, caps_of(mesh, elements, parameter), offset);
+  }
+
+  /// The declaration: `one`, `many` (documented by `one_doc` and `many_doc`) and `offset`.
+  OperationSpec spec(std::string doc, std::string one_doc, std::string many_doc, std::string counts) const {
+    const CapCutter self = *this;
+    auto selection = [self](const Params& p) { return selected_handles<H>(self.op, p, self.one, self.many); };
+    return edit_operation(
+        std::string(op), std::move(doc),
+        {selection_param<H>(one, many, false, std::move(one_doc)),
+         selection_param<H>(one, many, true, std::move(many_doc)), offset_param()},
+        std::move(counts),
+        [self, selection](Transaction& tx, const Params& p) {
+          const HandleSelection<H> s = selection(p);
+          return cut_outputs(self.cut(tx, s.handles, p.number("offset"), s.parameter),
+                             s.parameter == self.one);
+        },
+        [self, selection](const Mesh& mesh, Params& p) {
+          const HandleSelection<H> s = selection(p);
+          self.check(mesh, s.handles, p.number("offset"), s.parameter);
+        });
+  }
+};
 
 }  // namespace dlfl::detail

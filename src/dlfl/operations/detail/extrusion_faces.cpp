@@ -2,26 +2,21 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/operations/detail/extrusion_faces.h>
+#include <dlfl/operations/detail/handle_selection.h>
 
 namespace dlfl::detail {
 
 ParamSpec face_param(std::string doc) {
-  return param("face", ParamType::face, std::move(doc)).optional("exactly one of face and faces");
+  return selection_param<FaceId>("face", "faces", false, std::move(doc));
 }
 
 ParamSpec faces_param(std::string doc) {
-  return param("faces", ParamType::faces, std::move(doc)).optional("exactly one of face and faces");
+  return selection_param<FaceId>("face", "faces", true, std::move(doc));
 }
 
 FaceSelection selected_faces(std::string_view op, const Params& params) {
-  const bool one = params.has("face"), many = params.has("faces");
-  if (one == many) {
-    throw ParameterError(std::string(op) + ": give exactly one of parameters face and faces" +
-                             (one ? " (both are given)" : " (neither is given)"),
-                         "face");
-  }
-  if (one) return {{params.handle<FaceId>("face")}, "face"};
-  return {params.handles<FaceId>("faces"), "faces"};
+  HandleSelection<FaceId> s = selected_handles<FaceId>(op, params, "face", "faces");
+  return {std::move(s.handles), std::move(s.parameter)};
 }
 
 void check_surface_faces(std::string_view op, const Mesh& mesh, std::span<const FaceId> faces,

@@ -10,6 +10,8 @@
 
 #include <dlfl/mesh.h>
 #include <dlfl/operations/detail/refusal.h>
+#include <dlfl/operations/operation.h>
+#include <dlfl/operations/transaction.h>
 #include <dlfl/parameters.h>
 
 namespace dlfl::detail {
@@ -32,5 +34,39 @@ FaceSelection selected_faces(std::string_view op, const Params& params);
 /// hole face, a point sphere's face. O(k log k) for k faces.
 void check_surface_faces(std::string_view op, const Mesh& mesh, std::span<const FaceId> faces,
                          std::string_view parameter);
+
+/// Puts what an operation made under `many` in `out`, and its first element under `one` as well when the
+/// operation was given one element (`one_given`). Nothing when `made` is empty.
+template <class H>
+void put_made(Params& out, const char* many, const char* one, const std::vector<H>& made, bool one_given) {
+  if (made.empty()) return;
+  out[many] = made;
+  if (one_given) out[one] = made.front();
+}
+
+/// The declaration of an edit operation on `face` or `faces` (exactly one given; documented by `face_doc`
+/// and `faces_doc`, declared before `params`). `act(tx, selection, params)` changes the mesh and returns the
+/// outputs; `check(mesh, selection, params)` makes every refusal before anything changes.
+template <class Act, class Check>
+OperationSpec face_operation(std::string_view op, std::string doc, std::string face_doc,
+                             std::string faces_doc, std::vector<ParamSpec> params, std::string counts,
+                             Act act, Check check) {
+  params.insert(params.begin(), {face_param(std::move(face_doc)), faces_param(std::move(faces_doc))});
+  return edit_operation(
+      std::string(op), std::move(doc), std::move(params), std::move(counts),
+      [op, act](Transaction& tx, const Params& p) { return act(tx, selected_faces(op, p), p); },
+      [op, check](const Mesh& mesh, Params& p) { check(mesh, selected_faces(op, p), p); });
+}
+
+/// Builds each plan in turn, `build(tx, plan)`, and returns the results in the plans' order. The extrusions
+/// plan every face before the first change: each face's build touches only its own face and new elements,
+/// so every plan made beforehand still holds when its turn comes.
+template <class Plan, class Build>
+auto build_each(Transaction& tx, const std::vector<Plan>& plans, Build build) {
+  std::vector<decltype(build(tx, plans.front()))> results;
+  results.reserve(plans.size());
+  for (const Plan& plan : plans) results.push_back(build(tx, plan));
+  return results;
+}
 
 }  // namespace dlfl::detail

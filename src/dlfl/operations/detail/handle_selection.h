@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 #include <dlfl/mesh.h>
@@ -33,6 +34,19 @@ HandleSelection<H> selected_handles(std::string_view op, const Params& params, s
   require_one_of(op, params, one, many);
   if (params.has(one)) return {{params.handle<H>(one)}, std::string(one)};
   return {params.handles<H>(many), std::string(many)};
+}
+
+/// The declaration of `one` (a handle of type H; `list` false) or `many` (a list of them; `list` true), both
+/// optional, exactly one to be given.
+template <class H>
+ParamSpec selection_param(std::string_view one, std::string_view many, bool list, std::string doc) {
+  constexpr bool vertex = std::is_same_v<H, VertexId>, edge = std::is_same_v<H, EdgeId>;
+  static_assert(vertex || edge || std::is_same_v<H, FaceId>, "a selection is of vertices, edges or faces");
+  const ParamType type = vertex ? (list ? ParamType::vertices : ParamType::vertex)
+                         : edge ? (list ? ParamType::edges : ParamType::edge)
+                                : (list ? ParamType::faces : ParamType::face);
+  return param(std::string(list ? many : one), type, std::move(doc))
+      .optional("exactly one of " + std::string(one) + " and " + std::string(many));
 }
 
 /// Refuses `parameter` for an empty list or a removed element.

@@ -21,8 +21,7 @@ std::vector<OperationSpec> collapse_edge_operation_specs();   // collapse_edge.c
 std::vector<OperationSpec> splice_corners_operation_specs();  // splice_corners.cpp
 std::vector<OperationSpec> divide_edge_operation_specs();     // divide_edge.cpp
 std::vector<OperationSpec> flip_edge_operation_specs();       // flip_edge.cpp
-std::vector<OperationSpec> make_hole_operation_specs();       // make_hole.cpp
-std::vector<OperationSpec> fill_hole_operation_specs();       // fill_hole.cpp
+std::vector<OperationSpec> hole_flag_operation_specs();       // hole_flag.cpp (make_hole, fill_hole)
 
 std::vector<OperationSpec> stellate_face_operation_specs();        // stellate_face.cpp
 std::vector<OperationSpec> subdivide_face_operation_specs();       // subdivide_face.cpp
@@ -45,10 +44,9 @@ std::vector<OperationSpec> wireframe_operation_specs();  // wireframe.cpp
 std::vector<OperationSpec> columns_operation_specs();    // columns.cpp
 
 // Cutting (docs/modeling.md)
-std::vector<OperationSpec> truncate_vertex_operation_specs();  // truncate_vertex.cpp
-std::vector<OperationSpec> chamfer_edge_operation_specs();     // chamfer_edge.cpp
-std::vector<OperationSpec> cut_face_operation_specs();         // cut_face.cpp
-std::vector<OperationSpec> plane_cut_operation_specs();        // plane_cut.cpp
+std::vector<OperationSpec>
+cutting_operation_specs();  // cutting.cpp (truncate_vertex, chamfer_edge, cut_face)
+std::vector<OperationSpec> plane_cut_operation_specs();  // plane_cut.cpp
 
 // Cleanup and shape (docs/modeling.md)
 std::vector<OperationSpec> dissolve_coplanar_operation_specs();  // dissolve_coplanar.cpp
@@ -73,8 +71,7 @@ inline constexpr std::array operation_files = {
     &splice_corners_operation_specs,
     &divide_edge_operation_specs,
     &flip_edge_operation_specs,
-    &make_hole_operation_specs,
-    &fill_hole_operation_specs,
+    &hole_flag_operation_specs,
 
     &stellate_face_operation_specs,
     &subdivide_face_operation_specs,
@@ -97,9 +94,7 @@ inline constexpr std::array operation_files = {
     &columns_operation_specs,
 
     // Cutting
-    &truncate_vertex_operation_specs,
-    &chamfer_edge_operation_specs,
-    &cut_face_operation_specs,
+    &cutting_operation_specs,
     &plane_cut_operation_specs,
 
     // Cleanup and shape

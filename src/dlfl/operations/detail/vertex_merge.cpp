@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include <dlfl/navigation.h>
+#include <dlfl/operations/detail/refusal.h>
 
 namespace dlfl::detail {
 
@@ -17,6 +18,17 @@ std::vector<VertexId> common_neighbours(const Mesh& mesh, VertexId u, VertexId v
   std::sort(common.begin(), common.end());
   common.erase(std::unique(common.begin(), common.end()), common.end());  // parallel edges name w twice
   return common;
+}
+
+std::string doubled_edges(const std::vector<VertexId>& common, const std::vector<VertexId>& apexes,
+                          const char* ends) {
+  if (common.size() <= apexes.size()) return {};
+  const auto extra = std::find_if(common.begin(), common.end(), [&](VertexId w) {
+    return std::find(apexes.begin(), apexes.end(), w) == apexes.end();
+  });
+  return std::string(ends) + " share " + count_of(common.size(), "neighbour") +
+         ", the link condition allows " + std::to_string(apexes.size()) + "; the edges to " +
+         to_string(*extra) + " would double up";
 }
 
 void append_hole_flags(const Mesh& mesh, CornerId first, CornerId stop, std::vector<bool>& flags) {

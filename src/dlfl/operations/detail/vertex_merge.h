@@ -3,6 +3,7 @@
 // vertices they merge into one (docs/modeling.md, "collapse_edge"). Each is O(the valences involved).
 
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <dlfl/mesh.h>
@@ -11,6 +12,13 @@ namespace dlfl::detail {
 
 /// The distinct vertices joined by an edge to both u and v, u and v themselves left out, sorted.
 std::vector<VertexId> common_neighbours(const Mesh& mesh, VertexId u, VertexId v);
+
+/// Why the merge would double up an edge, or empty if it would not: the common neighbours of u and v (as
+/// `common_neighbours` gives them) may only be `apexes`, the third vertices of the triangles beside the edge
+/// that joins (or will join) u and v, whose two edges to the apex become a 2-gon. `ends` names u and v in
+/// the message ("the end vertices").
+std::string doubled_edges(const std::vector<VertexId>& common, const std::vector<VertexId>& apexes,
+                          const char* ends);
 
 /// The hole flags of the faces of the corners around a vertex, from `first` (included) along
 /// `next_around_vertex` up to `stop` (excluded), appended to `flags`. `stop` must be on that rotation.
