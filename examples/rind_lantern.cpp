@@ -10,8 +10,8 @@
 // V + E + F = 808 vertices, 2E + 4F = 1632 edges and 4F = 816 quads, the genus unchanged.
 // Usage: example_rind_lantern [DATA_DIR] [OUTPUT_DIR]
 #include <dlfl/dlfl.h>
+#include "model_report.h"
 
-#include <cstdio>
 #include <glm/geometric.hpp>
 #include <limits>
 #include <string>
@@ -52,22 +52,6 @@ int main(int argc, char** argv) {
   editor.apply("rind", {{"faces", windows}, {"thickness", 0.15}});
   editor.subdivide("catmull-clark", {}, 1);
 
-  const dlfl::Mesh& mesh = editor.mesh();
-  const dlfl::ValidationReport report = dlfl::validate(mesh);
-  const long genus = report.valid() && report.components.size() == 1 ? report.components[0].genus : -1;
-  std::printf("V %zu, E %zu, F %zu, genus %ld\n", mesh.num_vertices(), mesh.num_edges(), mesh.num_faces(),
-              genus);
-  dlfl::write_mesh(mesh, out + "/rind_lantern.obj");
-  dlfl::write_log(editor, out + "/rind_lantern.log.json");
-
-  // The log replays to the same mesh, and undoing the three steps gives the cube back.
-  const bool replays =
-      dlfl::mesh_hash(dlfl::replay_log(dlfl::log_text(editor)).mesh()) == dlfl::mesh_hash(mesh);
   const dlfl::Mesh cube = dlfl::read_mesh(data + "/cube.obj");
-  for (int i = 0; i < 3; ++i) editor.undo();
-  const bool undone = editor.mesh() == cube;
-  std::printf("log replays to the same mesh: %s; undo gives the cube back: %s\n", replays ? "yes" : "no",
-              undone ? "yes" : "no");
-  const bool counts = mesh.num_vertices() == 808 && mesh.num_edges() == 1632 && mesh.num_faces() == 816;
-  return genus == 5 && counts && replays && undone ? 0 : 1;
+  return example::report_model(editor, out, "rind_lantern", cube, 3, {808, 1632, 816}, 5) ? 0 : 1;
 }

@@ -9,8 +9,8 @@
 // quads, the genus unchanged.
 // Usage: example_wireframe_dodecahedron [DATA_DIR] [OUTPUT_DIR]
 #include <dlfl/dlfl.h>
+#include "model_report.h"
 
-#include <cstdio>
 #include <string>
 
 int main(int argc, char** argv) {
@@ -22,21 +22,7 @@ int main(int argc, char** argv) {
   editor.apply("wireframe", {{"thickness", 0.15}, {"width", 0.15}});
   editor.subdivide("catmull-clark", {}, 1);
 
-  const dlfl::Mesh& mesh = editor.mesh();
-  const dlfl::ValidationReport report = dlfl::validate(mesh);
-  const long genus = report.valid() && report.components.size() == 1 ? report.components[0].genus : -1;
-  std::printf("V %zu, E %zu, F %zu, genus %ld\n", mesh.num_vertices(), mesh.num_edges(), mesh.num_faces(),
-              genus);
-  dlfl::write_mesh(mesh, out + "/wireframe_dodecahedron.obj");
-  dlfl::write_log(editor, out + "/wireframe_dodecahedron.log.json");
-
-  // The log replays to the same mesh, and undoing the two steps gives the dodecahedron back.
-  const bool replays =
-      dlfl::mesh_hash(dlfl::replay_log(dlfl::log_text(editor)).mesh()) == dlfl::mesh_hash(mesh);
-  for (int i = 0; i < 2; ++i) editor.undo();
-  const bool undone = editor.mesh() == dodecahedron;
-  std::printf("log replays to the same mesh: %s; undo gives the dodecahedron back: %s\n",
-              replays ? "yes" : "no", undone ? "yes" : "no");
-  const bool counts = mesh.num_vertices() == 700 && mesh.num_edges() == 1440 && mesh.num_faces() == 720;
-  return genus == 11 && counts && replays && undone ? 0 : 1;
+  return example::report_model(editor, out, "wireframe_dodecahedron", dodecahedron, 2, {700, 1440, 720}, 11)
+             ? 0
+             : 1;
 }
