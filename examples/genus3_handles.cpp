@@ -6,22 +6,8 @@
 #include <dlfl/dlfl.h>
 #include "model_report.h"
 
-#include <cmath>
 #include <glm/geometric.hpp>
 #include <string>
-
-namespace {
-
-// The surface face whose normal points along `direction` and whose centroid lies at height z (within 0.25).
-dlfl::FaceId face_towards(const dlfl::Mesh& mesh, const glm::dvec3& direction, double z) {
-  for (dlfl::FaceId f : dlfl::surface_faces(mesh)) {
-    const glm::dvec3 n = dlfl::face_normal(mesh, f), c = dlfl::face_centroid(mesh, f);
-    if (glm::dot(n, direction) > 0.99 && std::abs(c.z - z) < 0.25) return f;
-  }
-  throw dlfl::InvalidArgument("no face points that way at that height");
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const std::string data = argc > 1 ? argv[1] : "data";
@@ -30,18 +16,20 @@ int main(int argc, char** argv) {
   editor.set_mesh(dlfl::read_mesh(data + "/cube.obj"), "cube.obj");
 
   // The tower: the top face (z = 1) moved up by 1.5, with side quads joining it to where it was.
-  editor.apply("extrude_face", {{"face", face_towards(editor.mesh(), {0, 0, 1}, 1)}, {"distance", 1.5}});
+  editor.apply("extrude_face",
+               {{"face", example::face_nearest(editor.mesh(), {0, 0, 1})}, {"distance", 1.5}});
 
   // Three handles, each a tube of 8 rings from a side of the cube (centroid at z = 0) to the tower's side
   // above it (z = 1.75), curving out along the two faces' normals.
   editor.begin_group("three handles");
   for (const glm::dvec3 side : {glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0)}) {
-    editor.apply("connect_faces", {{"face1", face_towards(editor.mesh(), side, 0)},
-                                   {"face2", face_towards(editor.mesh(), side, 1.75)},
-                                   {"segments", 8},
-                                   {"curve", "hermite"},
-                                   {"weight1", 1.5},
-                                   {"weight2", 1.5}});
+    editor.apply("connect_faces",
+                 {{"face1", example::face_nearest(editor.mesh(), side)},
+                  {"face2", example::face_nearest(editor.mesh(), side + glm::dvec3(0, 0, 1.75))},
+                  {"segments", 8},
+                  {"curve", "hermite"},
+                  {"weight1", 1.5},
+                  {"weight2", 1.5}});
   }
   editor.end_group();
   editor.subdivide("catmull-clark", {}, 2);

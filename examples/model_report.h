@@ -1,13 +1,26 @@
 #pragma once
-// What the modelling examples do at the end: report the model, write it with its log, and check that the
-// log replays to the same mesh and that undo gives the start back.
+// What the modelling examples share: finding a face by where it is, and at the end: reporting the model,
+// write it with its log, and check that the log replays to the same mesh and that undo gives the start back.
 
 #include <dlfl/dlfl.h>
 
 #include <cstdio>
+#include <glm/geometric.hpp>
+#include <limits>
 #include <string>
 
 namespace example {
+
+/// The surface face whose centroid is nearest to `target` (the first in handle order on a tie).
+inline dlfl::FaceId face_nearest(const dlfl::Mesh& mesh, const glm::dvec3& target) {
+  dlfl::FaceId best;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (dlfl::FaceId f : dlfl::surface_faces(mesh)) {
+    const double d = glm::distance(dlfl::face_centroid(mesh, f), target);
+    if (d < best_distance) best = f, best_distance = d;
+  }
+  return best;
+}
 
 /// Prints the editor's mesh (V, E, F, genus), writes it to OUT/NAME.obj and its log to OUT/NAME.log.json, and
 /// checks that the log replays to the same mesh and that `steps` undos give `start` back. True when all of

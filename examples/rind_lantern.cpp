@@ -12,25 +12,8 @@
 #include <dlfl/dlfl.h>
 #include "model_report.h"
 
-#include <glm/geometric.hpp>
-#include <limits>
 #include <string>
 #include <vector>
-
-namespace {
-
-// The surface face whose centroid is nearest to `target`.
-dlfl::FaceId face_nearest(const dlfl::Mesh& mesh, const glm::dvec3& target) {
-  dlfl::FaceId best;
-  double best_distance = std::numeric_limits<double>::infinity();
-  for (dlfl::FaceId f : dlfl::surface_faces(mesh)) {
-    const double d = glm::distance(dlfl::face_centroid(mesh, f), target);
-    if (d < best_distance) best = f, best_distance = d;
-  }
-  return best;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   const std::string data = argc > 1 ? argv[1] : "data";
@@ -46,7 +29,7 @@ int main(int argc, char** argv) {
     for (double sign : {1.0, -1.0}) {
       glm::dvec3 target(0.3);
       target[axis] = sign;
-      windows.push_back(face_nearest(editor.mesh(), target));
+      windows.push_back(example::face_nearest(editor.mesh(), target));
     }
   }
   editor.apply("rind", {{"faces", windows}, {"thickness", 0.15}});

@@ -140,9 +140,7 @@ CollapseEdgeResult collapse_edge(Transaction& tx, EdgeId e, const CollapseEdgeOp
   return result;
 }
 
-namespace detail {
-
-std::vector<OperationSpec> collapse_edge_operation_specs() {
+std::vector<OperationSpec> detail::collapse_edge_operation_specs() {
   return {edit_operation(
       "collapse_edge",
       "merges the two end vertices of an edge into one (from(e) stays); triangles beside it become 2-gons",
@@ -157,6 +155,4 @@ std::vector<OperationSpec> collapse_edge_operation_specs() {
       },
       [](const Mesh& m, Params& p) { check_collapse_edge(m, p.handle<EdgeId>("edge"), options_of(p)); })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

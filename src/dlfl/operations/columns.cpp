@@ -146,9 +146,7 @@ void columns(Transaction& tx, const ColumnsOptions& options) {
 
 void check_columns(const Mesh& mesh, const ColumnsOptions& options) { check(mesh, options); }
 
-namespace detail {
-
-std::vector<OperationSpec> columns_operation_specs() {
+std::vector<OperationSpec> detail::columns_operation_specs() {
   return {edit_operation(
       "columns", "the frame of wireframe from n-sided columns along the edges and joints at the vertices",
       {param("thickness", ParamType::number, 0.05, "the circumradius of each column's cross-section")
@@ -163,6 +161,4 @@ std::vector<OperationSpec> columns_operation_specs() {
         check(mesh, {p.number("thickness"), int(p.integer("sides"))});
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

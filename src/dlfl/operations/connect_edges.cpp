@@ -64,9 +64,7 @@ ConnectEdgesResult connect_edges(Transaction& tx, CornerId corner1, CornerId cor
   return result;
 }
 
-namespace detail {
-
-std::vector<OperationSpec> connect_edges_operation_specs() {
+std::vector<OperationSpec> detail::connect_edges_operation_specs() {
   return {edit_operation(
       "connect_edges",
       "bridges the edges leaving two corners of two faces with a new quad (two INSERTEDGEs): adds a handle "
@@ -84,6 +82,4 @@ std::vector<OperationSpec> connect_edges_operation_specs() {
         check_connect_edges(m, p.handle<CornerId>("corner1"), p.handle<CornerId>("corner2"));
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

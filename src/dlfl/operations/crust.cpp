@@ -31,9 +31,7 @@ void check_crust(const Mesh& mesh, const CrustOptions& options) {
   detail::inner_positions(mesh, op_name, "thickness", options.thickness);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> crust_operation_specs() {
+std::vector<OperationSpec> detail::crust_operation_specs() {
   return {edit_operation(
       "crust",
       "an inner reversed copy of every component, thickness below it; hole faces tube to their twins",
@@ -45,6 +43,4 @@ std::vector<OperationSpec> crust_operation_specs() {
       },
       [](const Mesh& mesh, Params& p) { check_crust(mesh, {p.number("thickness")}); })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

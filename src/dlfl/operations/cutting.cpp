@@ -98,9 +98,7 @@ void check_cut_faces(const Mesh& mesh, std::span<const FaceId> faces, const CutF
   face_cutter.check(mesh, faces, options.offset, parameter);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> cutting_operation_specs() {
+std::vector<OperationSpec> detail::cutting_operation_specs() {
   return {
       vertex_cutter.spec("cuts a corner off: a vertex of valence k becomes a k-gon", "the vertex to cut off",
                          "vertices to cut off together", "per vertex of valence k: V+k-1, E+k, F+1"),
@@ -112,6 +110,4 @@ std::vector<OperationSpec> cutting_operation_specs() {
           "the face to cut off", "faces to cut off together (no two sharing a vertex)",
           "per face of n sides with m = sum (valence - 2) edges leaving it: V+m-n, E+m-n, F+0")};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -127,9 +127,7 @@ DissolveCoplanarResult dissolve_coplanar(Transaction& tx, const DissolveCoplanar
   return Dissolve(tx, options).run();
 }
 
-namespace detail {
-
-std::vector<OperationSpec> dissolve_coplanar_operation_specs() {
+std::vector<OperationSpec> detail::dissolve_coplanar_operation_specs() {
   return {edit_operation(
       "dissolve_coplanar",
       "deletes the edges between faces whose normals differ by less than the angle, where the merged face "
@@ -145,6 +143,4 @@ std::vector<OperationSpec> dissolve_coplanar_operation_specs() {
       },
       [](const Mesh&, Params& p) { check_dissolve_coplanar({p.number("angle_degrees")}); })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -37,9 +37,7 @@ DivideEdgeResult divide_edge(Transaction& tx, EdgeId e, std::int64_t segments) {
   return result;
 }
 
-namespace detail {
-
-std::vector<OperationSpec> divide_edge_operation_specs() {
+std::vector<OperationSpec> detail::divide_edge_operation_specs() {
   return {edit_operation(
       "divide_edge", "cuts an edge into equal segments by new vertices on it",
       {param("edge", ParamType::edge, "the edge to divide"),
@@ -54,6 +52,4 @@ std::vector<OperationSpec> divide_edge_operation_specs() {
         check_divide_edge(m, p.handle<EdgeId>("edge"), p.integer("segments"));
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

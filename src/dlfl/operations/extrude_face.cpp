@@ -406,9 +406,7 @@ void check_extrude_faces(const Mesh& mesh, std::span<const FaceId> faces, const 
   planned(mesh, faces, options, face_parameter);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> extrude_face_operation_specs() {
+std::vector<OperationSpec> detail::extrude_face_operation_specs() {
   std::vector<std::string> styles;
   for (const auto& s : style_names) styles.emplace_back(s.name);
   return {face_operation(
@@ -447,6 +445,4 @@ std::vector<OperationSpec> extrude_face_operation_specs() {
         planned(mesh, selection.faces, options_of(p), selection.parameter);
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

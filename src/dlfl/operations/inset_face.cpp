@@ -86,9 +86,7 @@ void check_inset_faces(const Mesh& mesh, std::span<const FaceId> faces, const In
   planned(mesh, faces, options, face_parameter);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> inset_face_operation_specs() {
+std::vector<OperationSpec> detail::inset_face_operation_specs() {
   return {face_operation(
       op_name, "a smaller copy of a face inside it, joined to it by a ring of quads", "the face to inset",
       "faces to inset, each on its own",
@@ -107,6 +105,4 @@ std::vector<OperationSpec> inset_face_operation_specs() {
         planned(mesh, selection.faces, options_of(p), selection.parameter);
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

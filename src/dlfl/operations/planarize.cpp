@@ -74,9 +74,7 @@ PlanarizeResult planarize(Transaction& tx, const PlanarizeOptions& options) {
   return r;
 }
 
-namespace detail {
-
-std::vector<OperationSpec> planarize_operation_specs() {
+std::vector<OperationSpec> detail::planarize_operation_specs() {
   return {edit_operation(
       "planarize",
       "moves vertices so that faces approach their least-squares planes; reports the largest non-planarity "
@@ -91,6 +89,4 @@ std::vector<OperationSpec> planarize_operation_specs() {
       },
       [](const Mesh&, Params& p) { check_planarize({static_cast<int>(p.integer("iterations"))}); })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

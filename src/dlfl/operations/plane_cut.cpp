@@ -242,9 +242,7 @@ PlaneCutResult plane_cut(Transaction& tx, const PlaneCutOptions& options) {
   return result;
 }
 
-namespace detail {
-
-std::vector<OperationSpec> plane_cut_operation_specs() {
+std::vector<OperationSpec> detail::plane_cut_operation_specs() {
   return {edit_operation(
       "plane_cut", "cuts the mesh along a plane: crossed edges split, section edges drawn in crossed faces",
       {param("point", ParamType::point, "a point of the plane"),
@@ -258,6 +256,4 @@ std::vector<OperationSpec> plane_cut_operation_specs() {
       },
       [](const Mesh& mesh, Params& p) { check_plane_cut(mesh, options_of(p)); })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -49,14 +49,10 @@ std::size_t remove_2gons(Transaction& tx) {
   return removed;
 }
 
-namespace detail {
-
-std::vector<OperationSpec> remove_2gons_operation_specs() {
+std::vector<OperationSpec> detail::remove_2gons_operation_specs() {
   return {counting_operation(
       "remove_2gons",
       "removes every surface 2-gon by deleting one of its edges (merging it into the face across)",
       "V+0, E-k, F-k for k 2-gons removed", "two_gons_removed", &remove_2gons)};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -14,15 +14,11 @@ std::size_t remove_valence2(Transaction& tx) {
   return detail::join_valence2_vertices(tx, all);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> remove_valence2_operation_specs() {
+std::vector<OperationSpec> detail::remove_valence2_operation_specs() {
   return {counting_operation(
       "remove_valence2",
       "joins the two edges of every vertex of valence 2 (unless that would make a self-loop "
       "or a double edge with no 2-gon between)",
       "V-k, E-k, F+0 for k vertices joined", "vertices_removed", &remove_valence2)};
 }
-
-}  // namespace detail
 }  // namespace dlfl

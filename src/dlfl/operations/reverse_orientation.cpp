@@ -220,9 +220,7 @@ class Reversal {
 
 void reverse_orientation(Transaction& tx) { Reversal(tx).run(); }
 
-namespace detail {
-
-std::vector<OperationSpec> reverse_orientation_operation_specs() {
+std::vector<OperationSpec> detail::reverse_orientation_operation_specs() {
   return {edit_operation("reverse_orientation",
                          "turns every face the other way round (inside out); hole flags and named values are "
                          "kept",
@@ -231,6 +229,4 @@ std::vector<OperationSpec> reverse_orientation_operation_specs() {
                            return Params{};
                          })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -38,9 +38,7 @@ void check_rind(const Mesh& mesh, std::span<const FaceId> faces, const RindOptio
   planned(mesh, faces, options);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> rind_operation_specs() {
+std::vector<OperationSpec> detail::rind_operation_specs() {
   return {edit_operation(
       "rind", "a crust with the given faces punched through to their inner twins by tubes of quads",
       {param("thickness", ParamType::number, 0.1, "how far the copy lies below, along the vertex normals")
@@ -57,6 +55,4 @@ std::vector<OperationSpec> rind_operation_specs() {
         planned(mesh, selection.faces, {p.number("thickness")}, selection.parameter);
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

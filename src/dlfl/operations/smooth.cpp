@@ -57,9 +57,7 @@ void smooth(Transaction& tx, const SmoothOptions& options) {
   for (int i = 0; i < options.iterations; ++i) smooth_round(tx, options);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> smooth_operation_specs() {
+std::vector<OperationSpec> detail::smooth_operation_specs() {
   return {edit_operation(
       "smooth",
       "Laplacian smoothing: each vertex moves lambda of the way to the mean of its neighbours, per round",
@@ -74,6 +72,4 @@ std::vector<OperationSpec> smooth_operation_specs() {
       },
       [](const Mesh&, Params& p) { check_smooth(options_of(p)); })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -36,9 +36,7 @@ SpheralizeResult spheralize(Transaction& tx) {
   return r;
 }
 
-namespace detail {
-
-std::vector<OperationSpec> spheralize_operation_specs() {
+std::vector<OperationSpec> detail::spheralize_operation_specs() {
   return {edit_operation(
       "spheralize",
       "moves every vertex along the ray from the vertices' centroid onto the sphere through the farthest one",
@@ -48,6 +46,4 @@ std::vector<OperationSpec> spheralize_operation_specs() {
             {"center", r.center}, {"radius", r.radius}, {"vertices_at_center", r.vertices_at_center}};
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -147,9 +147,7 @@ VertexId splice_corners(Transaction& tx, CornerId c1, CornerId c2, const SpliceC
   return collapse_edge(tx, e, collapse).vertex;
 }
 
-namespace detail {
-
-std::vector<OperationSpec> splice_corners_operation_specs() {
+std::vector<OperationSpec> detail::splice_corners_operation_specs() {
   return {edit_operation(
       "splice_corners",
       "merges the vertices of two corners into one (vertex(corner1) stays): an edge between the corners, "
@@ -167,6 +165,4 @@ std::vector<OperationSpec> splice_corners_operation_specs() {
         check_splice_corners(m, p.handle<CornerId>("corner1"), p.handle<CornerId>("corner2"), options_of(p));
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

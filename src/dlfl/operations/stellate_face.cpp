@@ -108,9 +108,7 @@ StellateFaceResult stellate_face(Transaction& tx, FaceId f, const StellateFaceOp
   return stellate_checked(tx, one, options);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> stellate_face_operation_specs() {
+std::vector<OperationSpec> detail::stellate_face_operation_specs() {
   return {edit_operation(
       "stellate_face",
       "a new vertex above the face's centroid, joined to every corner: an n-gon becomes n triangles",
@@ -144,6 +142,4 @@ std::vector<OperationSpec> stellate_face_operation_specs() {
         check_stellate_faces(m, faces, p.number("height"), single ? "face" : "faces");
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -64,9 +64,7 @@ SubdivideFaceResult subdivide_face(Transaction& tx, FaceId f, const SubdivideFac
   return {r.vertices.front(), {}, r.faces};
 }
 
-namespace detail {
-
-std::vector<OperationSpec> subdivide_face_operation_specs() {
+std::vector<OperationSpec> detail::subdivide_face_operation_specs() {
   return {edit_operation(
       "subdivide_face",
       "a new vertex at the face's centroid joined to new edge midpoints (n quads) or to the corners (n "
@@ -87,6 +85,4 @@ std::vector<OperationSpec> subdivide_face_operation_specs() {
       },
       [](const Mesh& m, Params& p) { check_subdivide_face(m, p.handle<FaceId>("face")); })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -124,9 +124,7 @@ void transform(Transaction& tx, const TransformOptions& options) {
   for (const auto& [v, to] : moves) tx.set_position(v, to);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> transform_operation_specs() {
+std::vector<OperationSpec> detail::transform_operation_specs() {
   return {edit_operation(
       "transform",
       "moves every vertex: scale per axis and rotate about a centre, then translate: p' = center + "
@@ -145,6 +143,4 @@ std::vector<OperationSpec> transform_operation_specs() {
       },
       [](const Mesh& m, Params& p) { check_transform(m, options_of(p)); })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

@@ -192,9 +192,7 @@ TriangulateResult triangulate_all(Transaction& tx) {
   return triangulate(tx, faces);
 }
 
-namespace detail {
-
-std::vector<OperationSpec> triangulate_operation_specs() {
+std::vector<OperationSpec> detail::triangulate_operation_specs() {
   return {edit_operation(
       "triangulate",
       "cuts faces into triangles by diagonals (ear clipping in the face's plane); holes and triangles stay",
@@ -209,6 +207,4 @@ std::vector<OperationSpec> triangulate_operation_specs() {
         if (p.has("faces")) check_triangulate(m, p.handles<FaceId>("faces"));
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

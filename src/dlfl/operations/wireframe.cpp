@@ -96,9 +96,7 @@ std::vector<VertexId> wireframe(Transaction& tx, const WireframeOptions& options
 
 void check_wireframe(const Mesh& mesh, const WireframeOptions& options) { check(mesh, options); }
 
-namespace detail {
-
-std::vector<OperationSpec> wireframe_operation_specs() {
+std::vector<OperationSpec> detail::wireframe_operation_specs() {
   constexpr double infinity = std::numeric_limits<double>::infinity();
   return {edit_operation(
       "wireframe", "every edge a beam and every face an opening through the frame (genus E - V + 1)",
@@ -114,6 +112,4 @@ std::vector<OperationSpec> wireframe_operation_specs() {
         check(mesh, {p.number("thickness"), p.number("width")});
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl
