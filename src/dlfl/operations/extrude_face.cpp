@@ -401,11 +401,6 @@ std::vector<ExtrudeFaceResult> extrude_faces(Transaction& tx, std::span<const Fa
   return detail::build_each(tx, planned(tx.mesh(), faces, options, face_parameter), &build);
 }
 
-void check_extrude_faces(const Mesh& mesh, std::span<const FaceId> faces, const ExtrudeFaceOptions& options,
-                         std::string_view face_parameter) {
-  planned(mesh, faces, options, face_parameter);
-}
-
 std::vector<OperationSpec> detail::extrude_face_operation_specs() {
   std::vector<std::string> styles;
   for (const auto& s : style_names) styles.emplace_back(s.name);

@@ -71,22 +71,19 @@ struct ExtrudeFaceResult {
   VertexId apex;
 };
 
-/// Extrudes `face` (see ExtrudeStyle for the counts). Checks everything first (`check_extrude_faces`) and
-/// throws ParameterError naming "face" or the option at fault, with the mesh unchanged. O(n*segments).
+/// Extrudes `face` (see ExtrudeStyle for the counts). Checks everything first (the refusals of
+/// extrude_faces) and throws ParameterError naming "face" or the option at fault, with the mesh unchanged.
+/// O(n*segments).
 ExtrudeFaceResult extrude_face(Transaction& tx, FaceId face, const ExtrudeFaceOptions& options = {});
 
-/// Extrudes each face on its own, as extrude_face would one after the other (the counts add up); refusals
-/// of a face name `face_parameter`. The results are in the order of `faces`.
+/// Extrudes each face on its own, as extrude_face would one after the other (the counts add up). The results
+/// are in the order of `faces`. Refused before any change, with a ParameterError naming `face_parameter`: an
+/// empty list, a face listed twice, a removed, hole or point-sphere face, a face with no normal (a zero
+/// Newell vector) when no direction is given; naming the option: a zero direction, segments out of
+/// [1, 10000] or not 1 for a cone style, rotate_degrees or scale other than 0 and 1 for stellate and
+/// double-stellate, a scale not > 0, a number not finite, new positions that would not be finite.
 std::vector<ExtrudeFaceResult> extrude_faces(Transaction& tx, std::span<const FaceId> faces,
                                              const ExtrudeFaceOptions& options = {},
                                              std::string_view face_parameter = "faces");
-
-/// The checks of extrude_faces, with refusals of the faces naming `face_parameter`: an empty list, a face
-/// listed twice, a removed, hole or point-sphere face, a face with no normal (a zero Newell vector) when no
-/// direction is given; a zero direction, segments out of [1, 10000] or not 1 for a cone style, rotate_degrees
-/// or scale other than 0 and 1 for stellate and double-stellate, a scale not > 0, a number not finite, new
-/// positions that would not be finite. Throws ParameterError naming the parameter.
-void check_extrude_faces(const Mesh& mesh, std::span<const FaceId> faces, const ExtrudeFaceOptions& options,
-                         std::string_view face_parameter = "faces");
 
 }  // namespace dlfl

@@ -81,11 +81,6 @@ std::vector<FaceId> inset_faces(Transaction& tx, std::span<const FaceId> faces,
       });
 }
 
-void check_inset_faces(const Mesh& mesh, std::span<const FaceId> faces, const InsetFaceOptions& options,
-                       std::string_view face_parameter) {
-  planned(mesh, faces, options, face_parameter);
-}
-
 std::vector<OperationSpec> detail::inset_face_operation_specs() {
   return {face_operation(
       op_name, "a smaller copy of a face inside it, joined to it by a ring of quads", "the face to inset",

@@ -23,21 +23,17 @@ struct InsetFaceOptions {
 
 /// Insets `face`: the face becomes n quads (p_i, p_{i+1}, q_{i+1}, q_i) around the copy q_0 ... q_{n-1},
 /// which is returned (it turns as the face did). V+n, E+2n, F+n. Checks everything first
-/// (`check_inset_faces`) and throws ParameterError naming "face", "amount" or "depth", with the mesh
+/// (the refusals of inset_faces) and throws ParameterError naming "face", "amount" or "depth", with the mesh
 /// unchanged. O(n).
 FaceId inset_face(Transaction& tx, FaceId face, const InsetFaceOptions& options = {});
 
-/// Insets each face on its own, as inset_face would one after the other (the counts add up); refusals of a
-/// face name `face_parameter`. The copies are in the order of `faces`.
+/// Insets each face on its own, as inset_face would one after the other (the counts add up). The copies are
+/// in the order of `faces`. Refused before any change, with a ParameterError naming `face_parameter`: an
+/// empty list, a face listed twice, a removed, hole or point-sphere face, a face with no normal when depth
+/// is not 0; naming the option: an amount outside (0, 1), a number not finite, new positions that would not
+/// be finite.
 std::vector<FaceId> inset_faces(Transaction& tx, std::span<const FaceId> faces,
                                 const InsetFaceOptions& options = {},
                                 std::string_view face_parameter = "faces");
-
-/// The checks of inset_faces, with refusals of the faces naming `face_parameter`: an empty list, a face
-/// listed twice, a removed, hole or point-sphere face, a face with no normal when depth is not 0; an amount
-/// outside (0, 1), a number not finite, new positions that would not be finite. Throws ParameterError
-/// naming the parameter.
-void check_inset_faces(const Mesh& mesh, std::span<const FaceId> faces, const InsetFaceOptions& options,
-                       std::string_view face_parameter = "faces");
 
 }  // namespace dlfl
