@@ -56,6 +56,10 @@ std::vector<OperationSpec> planarize_operation_specs();          // planarize.cp
 std::vector<OperationSpec> smooth_operation_specs();             // smooth.cpp
 std::vector<OperationSpec> spheralize_operation_specs();         // spheralize.cpp
 
+// Hulls (docs/modeling.md)
+std::vector<OperationSpec> convex_hull_operation_specs();  // convex_hull.cpp
+std::vector<OperationSpec> dual_hull_operation_specs();    // dual_hull.cpp
+
 // One entry per line, grouped as the declarations above (kept out of clang-format so that adding one
 // entry touches one line).
 // clang-format off
@@ -104,6 +108,10 @@ inline constexpr std::array operation_files = {
     &planarize_operation_specs,
     &smooth_operation_specs,
     &spheralize_operation_specs,
+
+    // Hulls
+    &convex_hull_operation_specs,
+    &dual_hull_operation_specs,
 };
 // clang-format on
 

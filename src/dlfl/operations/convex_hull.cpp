@@ -1,0 +1,43 @@
+// convex_hull: the hull of detail/convex_hull_3d.h as a library function and a registered operation.
+
+#include <dlfl/operations/convex_hull.h>
+
+#include <vector>
+
+#include <dlfl/operations/detail/convex_hull_3d.h>
+#include <dlfl/operations/detail/operation_table.h>
+
+namespace dlfl {
+namespace {
+
+constexpr std::string_view op_name = "convex_hull";
+
+}  // namespace
+
+Mesh convex_hull(std::span<const glm::dvec3> points) {
+  return detail::hull_of_point_set(points, op_name).mesh;
+}
+
+Mesh convex_hull(const Mesh& mesh) {
+  detail::HullMesh hull = detail::hull_of_mesh(mesh, op_name);
+  detail::declare_attributes(mesh, hull.mesh);
+  for (const AttributeInfo& a : mesh.attributes()) {
+    if (a.kind != ElementKind::vertex) continue;
+    for (std::uint32_t i = 0; i < hull.source.size(); ++i) {
+      const AttributeValue value = mesh.attribute_value(a.kind, a.name, hull.source[i]);
+      if (!same_attribute_value(value, a.default_value))
+        hull.mesh.set_attribute_value(a.kind, a.name, i, value);
+    }
+  }
+  return std::move(hull.mesh);
+}
+
+std::vector<OperationSpec> detail::convex_hull_operation_specs() {
+  return {hull_operation(
+      "convex_hull",
+      "replaces the mesh with the convex hull of its vertices: planar, strictly convex faces (coplanar "
+      "points merged), closed, genus 0",
+      [](const Mesh& current) { return convex_hull(current); })};
+}
+
+}  // namespace dlfl
