@@ -1,12 +1,16 @@
 #pragma once
-// Checks shared by the tests of the modeling operations: volumes, counts, the editor round trip and refusals.
+// Checks shared by the tests of the modeling operations: volumes, counts, a check run on every modeling mesh,
+// the editor round trip, the counts an operation changes and refusals.
 
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <cstddef>
 #include <glm/geometric.hpp>
 #include <ostream>
 #include <string>
+#include <type_traits>
+#include <vector>
 
 #include <dlfl/errors.h>
 #include <dlfl/history/editor.h>
@@ -48,6 +52,26 @@ inline Counts counts(const Mesh& m) {
   return {long(m.num_vertices()), long(m.num_edges()), long(m.num_faces())};
 }
 
+/// Runs `check` on each of `meshes` with the mesh's name captured for the messages of failing checks:
+/// `check(mesh)`, or `check(name, mesh)` if it takes the name too.
+template <class Check>
+void for_each_mesh(const std::vector<ModelingMesh>& meshes, Check&& check) {
+  for (const ModelingMesh& m : meshes) {
+    CAPTURE(m.name);
+    if constexpr (std::is_invocable_v<Check&, const Mesh&>) {
+      check(m.mesh);
+    } else {
+      check(m.name, m.mesh);
+    }
+  }
+}
+
+/// for_each_mesh() on modeling_meshes().
+template <class Check>
+void for_each_modeling_mesh(Check&& check) {
+  for_each_mesh(modeling_meshes(), check);
+}
+
 /// V - E + F, hole faces counted as faces.
 inline long euler_characteristic(const Mesh& m) {
   return long(m.num_vertices()) - long(m.num_edges()) + long(m.num_faces());
@@ -77,29 +101,100 @@ inline Mesh check_editor_round_trip(const Mesh& start, const std::string& op, co
   return after;
 }
 
-/// Checks `op` is refused naming `parameter`, message "op: parameter <name>...", mesh and log unchanged.
-inline std::string check_refusal(const Mesh& start, const std::string& op, const Params& params,
-                                 const std::string& parameter) {
-  Editor ed;
-  ed.set_mesh(start);
+/// A change of the counts: vertices, edges and faces, and of those the hole faces.
+struct Delta {
+  long v = 0, e = 0, f = 0, holes = 0;
+};
+
+/// A mesh an operation left and the outputs it gave.
+struct Applied {
+  Mesh mesh;
+  Params out;
+};
+
+/// Applies `op` through check_editor_round_trip, then checks what every operation that keeps the topology
+/// type must: the counts changed by `delta`, the Euler characteristic kept and, if `check_orientation`, a
+/// closed mesh's volume keeping its sign (no face turned inside out). Returns the mesh after and the outputs.
+inline Applied apply_and_check(const Mesh& start, const std::string& op, const Params& params, Delta delta,
+                               bool check_orientation = true) {
+  Params out;
+  const Mesh after = check_editor_round_trip(start, op, params, &out);
+  CHECK(long(after.num_vertices()) == long(start.num_vertices()) + delta.v);
+  CHECK(long(after.num_edges()) == long(start.num_edges()) + delta.e);
+  CHECK(long(after.num_faces()) == long(start.num_faces()) + delta.f);
+  CHECK(long(after.num_hole_faces()) == long(start.num_hole_faces()) + delta.holes);
+  CHECK(euler_characteristic(after) == euler_characteristic(start));
+  if (check_orientation && start.num_hole_faces() == 0 && std::abs(signed_volume(start)) > 1e-9)
+    CHECK((signed_volume(after) > 0) == (signed_volume(start) > 0));
+  return {after, out};
+}
+
+/// What an apply expected to be refused raised: whether it was refused, the parameter its ParameterError
+/// names ("(accepted)" if none) and its message.
+struct Refusal {
+  bool refused = false;
+  std::string parameter = "(accepted)";
+  std::string message;
+};
+
+/// Applies `op` on `ed` expecting a ParameterError whose message names the operation, then the parameter, and
+/// contains `message_part`; checks the mesh and the log stay as they were. Returns what was raised.
+inline Refusal refusal(Editor& ed, const std::string& op, const Params& params,
+                       const std::string& message_part = {}) {
   const Mesh before = ed.mesh();
   const std::size_t logged = ed.log().size();
-  std::string message, named;
-  bool refused = false;
+  Refusal r;
   try {
     ed.apply(op, params);
   } catch (const ParameterError& e) {
-    refused = true;
-    message = e.what();
-    named = e.parameter();
+    r = {true, e.parameter(), e.what()};
   }
+  const std::string& message = r.message;
   CAPTURE(message);
-  CHECK(refused);
-  CHECK(named == parameter);
-  CHECK(message.rfind(op + ": parameter " + parameter, 0) == 0);
+  if (r.refused) {
+    // The operation first, then the parameter: "op: parameter <name> ...", or for a choice between two
+    // parameters "op: give exactly one of parameters <name> and <other> ...".
+    CHECK(message.rfind(op + ": ", 0) == 0);
+    CHECK(message.find(r.parameter) != std::string::npos);
+    CHECK((message.rfind(op + ": parameter " + r.parameter, 0) == 0 ||
+           message.rfind(op + ": give exactly one of parameters " + r.parameter + " and ", 0) == 0));
+    if (!message_part.empty()) CHECK(message.find(message_part) != std::string::npos);
+  }
   CHECK(ed.mesh() == before);
   CHECK(ed.log().size() == logged);
-  return message;
+  return r;
+}
+
+/// refusal() in an editor holding `start`.
+inline Refusal refusal(const Mesh& start, const std::string& op, const Params& params,
+                       const std::string& message_part = {}) {
+  Editor ed;
+  ed.set_mesh(start);
+  return refusal(ed, op, params, message_part);
+}
+
+/// The parameter a refused apply on `ed` names, "(accepted)" if it is not refused (see refusal()).
+inline std::string refused_parameter(Editor& ed, const std::string& op, const Params& params,
+                                     const std::string& message_part = {}) {
+  return refusal(ed, op, params, message_part).parameter;
+}
+
+/// The parameter a refused apply to `start` names, "(accepted)" if it is not refused (see refusal()).
+inline std::string refused_parameter(const Mesh& start, const std::string& op, const Params& params,
+                                     const std::string& message_part = {}) {
+  return refusal(start, op, params, message_part).parameter;
+}
+
+/// Checks `op` is refused naming `parameter` (see refusal()), the message containing `message_part`, mesh and
+/// log unchanged; the message.
+inline std::string check_refusal(const Mesh& start, const std::string& op, const Params& params,
+                                 const std::string& parameter, const std::string& message_part = {}) {
+  const Refusal r = refusal(start, op, params, message_part);
+  const std::string& message = r.message;
+  CAPTURE(message);
+  CHECK(r.refused);
+  CHECK(r.parameter == parameter);
+  return r.message;
 }
 
 }  // namespace dlfl::test

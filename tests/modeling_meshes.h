@@ -32,13 +32,13 @@ inline PolygonSoup prism_soup(int n) {
   return s;
 }
 
-/// The faces of `b` added to `a`, as a second component.
-inline PolygonSoup disjoint_union(PolygonSoup a, const PolygonSoup& b) {
-  const auto offset = static_cast<std::uint32_t>(a.positions.size());
-  for (const auto& p : b.positions) a.positions.push_back(p + glm::dvec3(5, 0, 0));
+/// The faces of `b` added to `a`, as a second component, its positions moved by `offset`.
+inline PolygonSoup disjoint_union(PolygonSoup a, const PolygonSoup& b, const glm::dvec3& offset = {5, 0, 0}) {
+  const auto base = static_cast<std::uint32_t>(a.positions.size());
+  for (const auto& p : b.positions) a.positions.push_back(p + offset);
   for (std::size_t f = 0; f < b.num_faces(); ++f) {
     std::vector<std::uint32_t> face;
-    for (std::uint32_t v : b.face(f)) face.push_back(v + offset);
+    for (std::uint32_t v : b.face(f)) face.push_back(v + base);
     a.add_face(face);
   }
   return a;

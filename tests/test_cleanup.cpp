@@ -43,53 +43,12 @@ using namespace dlfl;
 
 namespace {
 
+using test::Applied;
+using test::apply_and_check;
+using test::Delta;
 using test::euler_characteristic;
+using test::refused_parameter;
 using test::signed_volume;
-
-struct Delta {
-  long v = 0, e = 0, f = 0;
-};
-
-// Applies `op` through the shared editor round trip, then checks what every operation must keep: the
-// counts, the Euler characteristic, the hole faces and the orientation (a closed mesh's volume keeps its
-// sign). Returns the mesh after the op and the outputs.
-struct Applied {
-  Mesh mesh;
-  Params out;
-};
-Applied apply_and_check(const Mesh& start, const std::string& op, const Params& params, Delta delta,
-                        bool check_orientation = true) {
-  Params out;
-  const Mesh after = test::check_editor_round_trip(start, op, params, &out);
-  CHECK(long(after.num_vertices()) == long(start.num_vertices()) + delta.v);
-  CHECK(long(after.num_edges()) == long(start.num_edges()) + delta.e);
-  CHECK(long(after.num_faces()) == long(start.num_faces()) + delta.f);
-  CHECK(euler_characteristic(after) == euler_characteristic(start));
-  CHECK(after.num_hole_faces() == start.num_hole_faces());
-  if (check_orientation && start.num_hole_faces() == 0 && std::abs(signed_volume(start)) > 1e-9)
-    CHECK((signed_volume(after) > 0) == (signed_volume(start) > 0));
-  return {after, out};
-}
-
-// The parameter a refused apply names; the mesh and the log must stay as they were.
-std::string refused_parameter(const Mesh& start, const std::string& op, const Params& params) {
-  Editor ed;
-  ed.set_mesh(start);
-  const Mesh before = ed.mesh();
-  const std::size_t logged = ed.log().size();
-  std::string parameter = "(accepted)";
-  try {
-    ed.apply(op, params);
-  } catch (const ParameterError& e) {
-    parameter = e.parameter();
-    const std::string message = e.what();
-    CAPTURE(message);
-    CHECK(message.rfind(op + ": parameter " + parameter, 0) == 0);
-  }
-  CHECK(ed.mesh() == before);
-  CHECK(ed.log().size() == logged);
-  return parameter;
-}
 
 bool is_grid(const std::string& name) { return name == "open grid 3x2"; }
 bool is_slab(const std::string& name) { return name == "genus 2" || name == "genus 3"; }
@@ -172,9 +131,7 @@ TEST_CASE("remove_valence2: the modeling meshes") {
   // Every vertex of the polyhedra, prisms, torus and slabs has 3 or more edges. The open grid's four
   // corners have two (to (1,0) and (0,1), not joined to each other): each goes, its corner quad becomes a
   // triangle and the hole face loses a corner: V-4, E-4, F+0.
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const std::string& name, const Mesh& mesh) {
     const long k = is_grid(name) ? 4 : 0;
     const Applied r = apply_and_check(mesh, "remove_valence2", {}, {-k, -k, 0});
     CHECK(r.out.integer("vertices_removed") == k);
@@ -186,7 +143,7 @@ TEST_CASE("remove_valence2: the modeling meshes") {
         if (r.mesh.is_hole(f)) CHECK(r.mesh.size(f) == 10 - 4);
       }
     }
-  }
+  });
 }
 
 TEST_CASE("remove_valence2: divided edges are joined back; pillows stop at two 2-gons") {
@@ -263,11 +220,9 @@ TEST_CASE("remove_valence2: a join that would double an edge with no 2-gon betwe
 // ---- remove_2gons ---------------------------------------------------------------------------------------
 
 TEST_CASE("remove_2gons: the modeling meshes have none; collapsed triangles lose theirs") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     CHECK(apply_and_check(mesh, "remove_2gons", {}, {}).out.integer("two_gons_removed") == 0);
-  }
+  });
   // An octahedron edge collapsed without cleanup: its two triangles become 2-gons (V 5, E 11, F 8). Each is
   // merged into the triangle across one of its edges: E-2, F-2, which is what collapse_edge's cleanup
   // gives (V-1, E-1-2, F-2 from the octahedron).
@@ -346,10 +301,8 @@ TEST_CASE("dissolve_coplanar: the modeling meshes") {
   // plane, merge into one quad (5 merges); the two interior edges left dangling go with the two interior
   // vertices, and the six boundary vertices between corners, left with two edges along the border, are
   // joined away: V 4, E 4, F 2 (the quad and the hole).
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
-    if (is_slab(name)) continue;
+  test::for_each_modeling_mesh([&](const std::string& name, const Mesh& mesh) {
+    if (is_slab(name)) return;
     const Delta d = is_grid(name) ? Delta{-8, -13, -5} : Delta{};
     const Applied r = apply_and_check(mesh, "dissolve_coplanar", {}, d);
     if (is_grid(name)) {
@@ -358,7 +311,7 @@ TEST_CASE("dissolve_coplanar: the modeling meshes") {
       CHECK(r.out.integer("vertices_joined") == 6);
       for (FaceId f : r.mesh.faces()) CHECK(r.mesh.size(f) == 4);
     }
-  }
+  });
 }
 
 TEST_CASE("dissolve_coplanar: the genus slabs keep their walls apart and their tops simple") {
@@ -368,10 +321,8 @@ TEST_CASE("dissolve_coplanar: the genus slabs keep their walls apart and their t
   // pair of neighbours sharing two chains or more gives F - 1 <= C / 2: so 2 <= F <= g + 1. Each of the
   // four outer walls is a strip of quads in one plane: one face each. The 4g walls of the holes lie in no
   // plane with a neighbour: they stay.
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    if (!is_slab(name)) continue;
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const std::string& name, const Mesh& mesh) {
+    if (!is_slab(name)) return;
     const long g = name == "genus 2" ? 2 : 3;
     Editor ed;
     ed.set_mesh(mesh);
@@ -408,7 +359,7 @@ TEST_CASE("dissolve_coplanar: the genus slabs keep their walls apart and their t
     const auto path = test::scratch("dissolve_slab.log.json");
     write_log(ed, path);
     CHECK(mesh_hash(replay_log_file(path).mesh()) == mesh_hash(ed.mesh()));
-  }
+  });
 }
 
 TEST_CASE("dissolve_coplanar: a subdivided cube dissolves back to the cube") {
@@ -475,16 +426,14 @@ TEST_CASE("dissolve_coplanar: refusals") {
 TEST_CASE("planarize: planar meshes do not move") {
   // Every face of the modeling meshes is planar (the torus's quads are isosceles trapezoids): the measure
   // is 0 up to rounding, and no vertex is written.
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     CHECK(nonplanarity(mesh) <= 1e-12);
     const Applied r = apply_and_check(mesh, "planarize", {}, {});
     CHECK(r.mesh == mesh);
     CHECK(r.out.number("nonplanarity_before") <= 1e-12);
     CHECK(r.out.number("nonplanarity_after") <= 1e-12);
     CHECK(r.out.integer("iterations_run") == 0);
-  }
+  });
 }
 
 TEST_CASE("planarize: a skew quad's measure and its flattening") {
@@ -571,12 +520,10 @@ TEST_CASE("smooth: the open grid's boundary stays unless asked") {
 }
 
 TEST_CASE("smooth: the modeling meshes keep their counts, validity and orientation") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     apply_and_check(mesh, "smooth", {{"iterations", 3}}, {});
     CHECK(apply_and_check(mesh, "smooth", {{"iterations", 0}}, {}).mesh == mesh);
-  }
+  });
 }
 
 TEST_CASE("smooth: refusals") {
@@ -598,9 +545,7 @@ TEST_CASE("smooth: refusals") {
 // ---- spheralize -----------------------------------------------------------------------------------------
 
 TEST_CASE("spheralize: every vertex at the radius afterwards") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const std::string& name, const Mesh& mesh) {
     // Projecting the second component from a centre outside it folds it: its volume's sign is not kept.
     const bool folds = name == "cube and tetrahedron";
     const Applied r = apply_and_check(mesh, "spheralize", {}, {}, !folds);
@@ -609,7 +554,7 @@ TEST_CASE("spheralize: every vertex at the radius afterwards") {
     for (VertexId v : r.mesh.vertices())
       CHECK(glm::length(r.mesh.position(v) - c) == doctest::Approx(radius).epsilon(1e-12));
     CHECK(r.out.integer("vertices_at_center") == 0);
-  }
+  });
 }
 
 TEST_CASE("spheralize: vertices already on the sphere stay; one at the centre is left") {

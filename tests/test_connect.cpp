@@ -74,36 +74,23 @@ Run checked(const Mesh& start, const std::string& op, const Params& params, Delt
   return {after, out};
 }
 
-/// The ParameterError an editor raises for `op`, checking the mesh is left as it was; "accepted" if none.
-ParameterError refusal(const Mesh& start, const std::string& op, const Params& params) {
-  Editor ed;
-  ed.set_mesh(start);
-  const Mesh before = ed.mesh();
-  try {
-    ed.apply(op, params);
-  } catch (const ParameterError& e) {
-    CHECK(ed.mesh() == before);
-    CHECK(ed.log().size() == 1);  // only the set_mesh
-    return e;
-  }
-  FAIL("accepted: " << op);
-  return ParameterError("accepted", "");
-}
-
-/// Checks a refusal names `param` and its message starts "op: parameter param" and contains `words`.
-void check_refusal(const Mesh& start, const std::string& op, const Params& params, const std::string& param,
-                   const std::string& words) {
-  const ParameterError e = refusal(start, op, params);
-  CHECK(e.parameter() == param);
-  const std::string message = e.what();
-  CHECK_MESSAGE(message.rfind(op + ": parameter " + param, 0) == 0, message);
-  CHECK_MESSAGE(message.find(words) != std::string::npos, message);
-}
+using test::check_refusal;
 
 CornerId corner_of(const Mesh& m, std::uint32_t v, std::uint32_t f) {
   const CornerId c = corner_in_face(m, VertexId(v), FaceId(f));
   REQUIRE(c.valid());
   return c;
+}
+
+/// Checks connect_faces refuses the corners at vertex 4 of faces f1 and f2, which share it: the long edge
+/// would join vertex 4 to itself.
+void check_shared_corners_refused(const Mesh& m, std::uint32_t f1, std::uint32_t f2) {
+  check_refusal(m, "connect_faces",
+                {{"face1", FaceId(f1)},
+                 {"face2", FaceId(f2)},
+                 {"corner1", corner_of(m, 4, f1)},
+                 {"corner2", corner_of(m, 4, f2)}},
+                "corner2", "would join vertex v4");
 }
 
 std::vector<std::uint32_t> face_vertices(const Mesh& m, FaceId f) {
@@ -171,12 +158,10 @@ constexpr std::uint32_t a_right = 5, b_left = 10, a_top = 1, b_top = 7;
 
 TEST_CASE(
     "connect_edges: a bridge on every modeling mesh: E+2, the genus grows by one or two components join") {
-  for (const test::ModelingMesh& mm : test::modeling_meshes()) {
-    CAPTURE(mm.name);
-    const Mesh& m = mm.mesh;
+  test::for_each_modeling_mesh([&](const std::string& name, const Mesh& m) {
     const std::vector<long> g = genera(m);
     FaceId f1(0), f2 = farthest_face(m, f1);
-    if (mm.name == "cube and tetrahedron") f2 = FaceId(6);  // the tetrahedron's first face: across components
+    if (name == "cube and tetrahedron") f2 = FaceId(6);  // the tetrahedron's first face: across components
     REQUIRE(f1 != f2);
     // The first corner of face2 whose edge makes a bridge with face1's first (faces may share vertices).
     const CornerId c1 = m.first_corner(f1);
@@ -202,7 +187,7 @@ TEST_CASE(
     } else {
       CHECK(genera(r.mesh) == std::vector<long>{g[0] + g[1]});  // chi 2 + 2 - 2: one sphere
     }
-  }
+  });
 }
 
 TEST_CASE("connect_edges: between two boundary loops of an open tube, and refused from a hole to a face") {
@@ -283,22 +268,20 @@ TEST_CASE("connect_faces: a tube between far faces of every modeling mesh, and a
                                                   {"genus 3", 4},
                                                   {"open grid 3x2", 4},
                                                   {"cube and tetrahedron", 4}};
-  for (const test::ModelingMesh& mm : test::modeling_meshes()) {
-    CAPTURE(mm.name);
-    const Mesh& m = mm.mesh;
+  test::for_each_modeling_mesh([&](const std::string& name, const Mesh& m) {
     const std::vector<long> g = genera(m);
     FaceId f1(0), f2 = farthest_face(m, f1);
-    if (mm.name == "cube and tetrahedron") {
+    if (name == "cube and tetrahedron") {
       f1 = FaceId(a_right);
       f2 = FaceId(6);
       for (std::uint32_t f = 7; f < 10; ++f)
         if (face_normal(m, FaceId(f)).x < face_normal(m, f2).x) f2 = FaceId(f);
     }
     const long n1 = m.size(f1), n2 = m.size(f2), n = std::max(n1, n2);
-    CHECK(n == expected_m.at(mm.name));
+    CHECK(n == expected_m.at(name));
     // The line through a non-convex body leaves it, and the sign of a self-crossing surface's volume means
     // nothing: the volume is checked on the convex meshes and across the gap between the two components.
-    const bool convex = mm.name != "torus 4x3" && mm.name != "genus 2" && mm.name != "genus 3";
+    const bool convex = name != "torus 4x3" && name != "genus 2" && name != "genus 3";
     for (long s : {1L, 3L}) {
       CAPTURE(s);
       // A full-size line tube between two faces of a convex body is the whole body (volume 0): pinched.
@@ -313,7 +296,7 @@ TEST_CASE("connect_faces: a tube between far faces of every modeling mesh, and a
         CHECK(genera(r.mesh) == std::vector<long>{0});  // chi 2 + 2 - 2 = 2 on one component
       }
     }
-  }
+  });
 }
 
 TEST_CASE("connect_faces: every segment count from 1 to 64 between facing faces of two cubes") {
@@ -383,12 +366,7 @@ TEST_CASE("connect_faces: faces sharing an edge get a pairing with no self-loop 
     CHECK(doubled_vertex_pairs(r.mesh) == 0);
   }
   // The corners at the shared vertices, given: the long edge from 4 to 4 is refused.
-  check_refusal(m, "connect_faces",
-                {{"face1", FaceId(1)},
-                 {"face2", FaceId(2)},
-                 {"corner1", corner_of(m, 4, 1)},
-                 {"corner2", corner_of(m, 4, 2)}},
-                "corner2", "would join vertex v4");
+  check_shared_corners_refused(m, 1, 2);
   // Given corner1 only: its partner is chosen the same way.
   const TubeEnds from5 = check_connect_faces(m, FaceId(1), FaceId(2), {.corner1 = corner_of(m, 5, 1)});
   CHECK(from5.corner2 == corner_of(m, 0, 2));  // s1 = 1 needs s2 = 0
@@ -415,12 +393,7 @@ TEST_CASE("connect_faces: faces sharing only a vertex (the octahedron's opposite
                             tube_delta(3, 3), false);
   CHECK(genera(three.mesh) == std::vector<long>{1});
   CHECK(doubled_vertex_pairs(three.mesh) == 0);  // subdivided long edges
-  check_refusal(m, "connect_faces",
-                {{"face1", FaceId(0)},
-                 {"face2", FaceId(2)},
-                 {"corner1", corner_of(m, 4, 0)},
-                 {"corner2", corner_of(m, 4, 2)}},
-                "corner2", "would join vertex v4");
+  check_shared_corners_refused(m, 0, 2);
 }
 
 // ---- connect_faces: holes
@@ -683,13 +656,12 @@ TEST_CASE("connect_faces: refusals name the argument and leave the mesh as it wa
                 {{"face1", FaceId(0)}, {"face2", FaceId(1)}, {"corner2", corner_of(m, 0, 0)}}, "corner2",
                 "is not a corner of face2");
   // The registry's own checks: ranges and removed handles.
-  CHECK(refusal(m, "connect_faces", {{"face1", FaceId(0)}, {"face2", FaceId(1)}, {"segments", 0}})
-            .parameter() == "segments");
-  CHECK(refusal(m, "connect_faces", {{"face1", FaceId(0)}, {"face2", FaceId(1)}, {"pinch", -1.0}})
-            .parameter() == "pinch");
-  CHECK(refusal(m, "connect_faces", {{"face1", FaceId(0)}, {"face2", FaceId(1)}, {"curve", "spline"}})
-            .parameter() == "curve");
-  CHECK(refusal(m, "connect_faces", {{"face1", FaceId(0)}, {"face2", FaceId(99)}}).parameter() == "face2");
+  check_refusal(m, "connect_faces", {{"face1", FaceId(0)}, {"face2", FaceId(1)}, {"segments", 0}},
+                "segments");
+  check_refusal(m, "connect_faces", {{"face1", FaceId(0)}, {"face2", FaceId(1)}, {"pinch", -1.0}}, "pinch");
+  check_refusal(m, "connect_faces", {{"face1", FaceId(0)}, {"face2", FaceId(1)}, {"curve", "spline"}},
+                "curve");
+  check_refusal(m, "connect_faces", {{"face1", FaceId(0)}, {"face2", FaceId(99)}}, "face2");
 
   // The library function checks the same, before it changes anything.
   Mesh copy = m;

@@ -35,7 +35,10 @@ using namespace dlfl;
 
 namespace {
 
+using test::apply_and_check;
+using test::Delta;
 using test::euler_characteristic;
+using test::refused_parameter;
 using test::signed_volume;
 
 double surface_area(const Mesh& m) {
@@ -44,51 +47,10 @@ double surface_area(const Mesh& m) {
   return area;
 }
 
-struct Delta {
-  long v, e, f, holes = 0;
-};
-
-// Applies `op` through the shared editor round trip, then checks the counts, the Euler characteristic, the
-// hole faces and the orientation.
-Params apply_and_check(const Mesh& start, const std::string& op, const Params& params, Delta delta) {
-  Params out;
-  const Mesh after = test::check_editor_round_trip(start, op, params, &out);
-  CHECK(long(after.num_vertices()) == long(start.num_vertices()) + delta.v);
-  CHECK(long(after.num_edges()) == long(start.num_edges()) + delta.e);
-  CHECK(long(after.num_faces()) == long(start.num_faces()) + delta.f);
-  CHECK(long(after.num_hole_faces()) == long(start.num_hole_faces()) + delta.holes);
-  CHECK(euler_characteristic(after) == euler_characteristic(start));
-  if (start.num_hole_faces() == 0 && std::abs(signed_volume(start)) > 1e-9)
-    CHECK((signed_volume(after) > 0) == (signed_volume(start) > 0));
-  return out;
-}
-
 Mesh applied(const Mesh& start, const std::string& op, const Params& params) {
   Mesh m = start;
   apply_operation(m, op, params);
   return m;
-}
-
-// The parameter a refused apply names; the mesh and the log stay as they were.
-std::string refused_parameter(const Mesh& start, const std::string& op, const Params& params,
-                              const std::string& message_part = {}) {
-  Editor ed;
-  ed.set_mesh(start);
-  const std::size_t logged = ed.log().size();
-  std::string parameter = "(accepted)";
-  try {
-    ed.apply(op, params);
-  } catch (const ParameterError& e) {
-    parameter = e.parameter();
-    const std::string message = e.what();
-    CAPTURE(message);
-    CHECK(message.rfind(op + ": ", 0) == 0);
-    CHECK(message.find(parameter) != std::string::npos);
-    if (!message_part.empty()) CHECK(message.find(message_part) != std::string::npos);
-  }
-  CHECK(ed.mesh() == start);
-  CHECK(ed.log().size() == logged);
-  return parameter;
 }
 
 bool touches_hole(const Mesh& m, VertexId v) {
@@ -123,18 +85,27 @@ VertexId vertex_at(const Mesh& m, const glm::dvec3& p) {
   return VertexId();
 }
 
+// A U (two prongs at x in [0, 1] and [2, 3], the notch between, 2 high) as a pillow of two faces.
+Mesh u_pillow() {
+  PolygonSoup u;
+  for (auto [x, y] :
+       std::vector<std::pair<double, double>>{{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})
+    u.positions.push_back({x, y, 0});
+  u.add_face({0, 1, 2, 3, 4, 5, 6, 7});
+  u.add_face({7, 6, 5, 4, 3, 2, 1, 0});
+  return build_mesh(u);
+}
+
 }  // namespace
 
 TEST_CASE("truncate_vertex: V+k-1, E+k, F+1 on every modeling mesh, the new face a k-gon") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     int tried = 0;
     for (VertexId v : mesh.vertices()) {
       if (tried++ == 3) break;
       const long k = mesh.valence(v);
       const long holes = touches_hole(mesh, v) ? 1 : 0;
-      const Params out = apply_and_check(mesh, "truncate_vertex", {{"vertex", v}}, {k - 1, k, 1, holes});
+      const Params out = apply_and_check(mesh, "truncate_vertex", {{"vertex", v}}, {k - 1, k, 1, holes}).out;
       const Mesh after = applied(mesh, "truncate_vertex", {{"vertex", v}});
       const FaceId f = out.handle<FaceId>("face");
       CHECK(after.size(f) == std::uint32_t(k));
@@ -150,7 +121,7 @@ TEST_CASE("truncate_vertex: V+k-1, E+k, F+1 on every modeling mesh, the new face
         CHECK(on_an_edge);
       }
     }
-  }
+  });
 }
 
 TEST_CASE("truncate_vertex: the cube's corner, hand counted, and its volume") {
@@ -195,7 +166,8 @@ TEST_CASE("truncate_vertex: two neighbours share an edge, which keeps a middle p
   const VertexId a(0), b(1);
   REQUIRE(find_edge(t, a, b).valid());
   const Params out =
-      apply_and_check(t, "truncate_vertex", {{"vertices", std::vector<VertexId>{a, b}}}, {2 + 2, 3 + 3, 2});
+      apply_and_check(t, "truncate_vertex", {{"vertices", std::vector<VertexId>{a, b}}}, {2 + 2, 3 + 3, 2})
+          .out;
   const Mesh after = applied(t, "truncate_vertex", {{"vertices", std::vector<VertexId>{a, b}}});
   CHECK(out.handles<FaceId>("faces").size() == 2);
   // The edge a-b keeps its middle half, from a quarter to three quarters.
@@ -209,7 +181,7 @@ TEST_CASE("truncate_vertex: a vertex of valence 2 becomes a 2-gon; the open grid
   const Mesh grid = build_mesh(test::grid_soup(3, 2));
   const VertexId corner = vertex_at(grid, {0, 0, 0});
   REQUIRE(grid.valence(corner) == 2);
-  const Params out = apply_and_check(grid, "truncate_vertex", {{"vertex", corner}}, {1, 2, 1, 1});
+  const Params out = apply_and_check(grid, "truncate_vertex", {{"vertex", corner}}, {1, 2, 1, 1}).out;
   const Mesh after = applied(grid, "truncate_vertex", {{"vertex", corner}});
   CHECK(after.size(out.handle<FaceId>("face")) == 2);
   CHECK(after.is_hole(out.handle<FaceId>("face")));
@@ -220,21 +192,19 @@ TEST_CASE("truncate_vertex: a vertex of valence 2 becomes a 2-gon; the open grid
 }
 
 TEST_CASE("chamfer_edge: V+a+b-4, E+a+b-3, F+1 on every modeling mesh") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     int tried = 0;
     for (EdgeId e : mesh.edges()) {
       if (tried++ == 3) break;
       const long a = mesh.valence(mesh.from(e)), b = mesh.valence(mesh.to(e));
       const long holes = touches_hole(mesh, mesh.from(e)) || touches_hole(mesh, mesh.to(e)) ? 1 : 0;
       const Params out =
-          apply_and_check(mesh, "chamfer_edge", {{"edge", e}}, {a + b - 4, a + b - 3, 1, holes});
+          apply_and_check(mesh, "chamfer_edge", {{"edge", e}}, {a + b - 4, a + b - 3, 1, holes}).out;
       const Mesh after = applied(mesh, "chamfer_edge", {{"edge", e}});
       CHECK(after.size(out.handle<FaceId>("face")) == std::uint32_t(a + b - 2));
       CHECK(!after.is_alive(e));
     }
-  }
+  });
 }
 
 TEST_CASE("chamfer_edge: a cube's edge becomes a quad, the faces at its ends pentagons") {
@@ -258,9 +228,7 @@ TEST_CASE("chamfer_edge: two opposite edges of a face, joined by edges that get 
 }
 
 TEST_CASE("cut_face: V+m-n, E+m-n, F+0 with m = sum (valence - 2), on every modeling mesh") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     int tried = 0;
     for (FaceId f : surface_faces(mesh)) {
       if (tried++ == 3) break;
@@ -270,11 +238,11 @@ TEST_CASE("cut_face: V+m-n, E+m-n, F+0 with m = sum (valence - 2), on every mode
         holes = holes || touches_hole(mesh, v);
       }
       const long n = mesh.size(f);
-      const Params out = apply_and_check(mesh, "cut_face", {{"face", f}}, {m - n, m - n, 0, holes});
+      const Params out = apply_and_check(mesh, "cut_face", {{"face", f}}, {m - n, m - n, 0, holes}).out;
       const Mesh after = applied(mesh, "cut_face", {{"face", f}});
       CHECK(after.size(out.handle<FaceId>("face")) == std::uint32_t(m));
     }
-  }
+  });
 }
 
 TEST_CASE("cut_face: a prism's top slides down by offset times the height; both caps add up") {
@@ -303,7 +271,7 @@ TEST_CASE("cut_face: a prism's top slides down by offset times the height; both 
 TEST_CASE("cut_face: an octahedron's triangle becomes a hexagon (m = 3 * 2)") {
   const Mesh o = build_mesh(test::octahedron_soup());
   const FaceId f = *surface_faces(o).begin();
-  const Params out = apply_and_check(o, "cut_face", {{"face", f}}, {3, 3, 0});
+  const Params out = apply_and_check(o, "cut_face", {{"face", f}}, {3, 3, 0}).out;
   CHECK(applied(o, "cut_face", {{"face", f}}).size(out.handle<FaceId>("face")) == 6);
 }
 
@@ -438,7 +406,7 @@ Params plane(const glm::dvec3& point, const glm::dvec3& normal, const std::strin
 TEST_CASE("plane_cut: the cube through its middle, through two of its edges and through three vertices") {
   const Mesh cube = test::cube();
   SUBCASE("z = 0: 4 edges split, 4 section edges, one loop; below becomes the bottom and 4 half sides") {
-    const Params out = apply_and_check(cube, "plane_cut", plane({0, 0, 0}, {0, 0, 1}), {4, 8, 4});
+    const Params out = apply_and_check(cube, "plane_cut", plane({0, 0, 0}, {0, 0, 1}), {4, 8, 4}).out;
     const Mesh after = applied(cube, "plane_cut", plane({0, 0, 0}, {0, 0, 1}));
     CHECK(section_loops(after, {0, 0, 0}, {0, 0, 1}, 1e-12) == 1);
     CHECK(out.handles<EdgeId>("edges").size() == 4);
@@ -502,14 +470,7 @@ TEST_CASE(
 }
 
 TEST_CASE("plane_cut: a non-convex face crossed four times is cut along the pieces inside it") {
-  // A U (two prongs at x in [0, 1] and [2, 3], the notch between) as a pillow of two faces.
-  PolygonSoup u;
-  for (auto [x, y] :
-       std::vector<std::pair<double, double>>{{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})
-    u.positions.push_back({x, y, 0});
-  u.add_face({0, 1, 2, 3, 4, 5, 6, 7});
-  u.add_face({7, 6, 5, 4, 3, 2, 1, 0});
-  const Mesh pillow = build_mesh(u);
+  const Mesh pillow = u_pillow();
   apply_and_check(pillow, "plane_cut", plane({0, 1.5, 0}, {0, 1, 0}), {4, 8, 4});
   const Mesh after = applied(pillow, "plane_cut", plane({0, 1.5, 0}, {0, 1, 0}));
   // Each section edge is inside a prong, none across the notch.
@@ -528,16 +489,10 @@ TEST_CASE("plane_cut: a non-convex face crossed four times is cut along the piec
 
 TEST_CASE(
     "plane_cut: a line along the notch of a U, touching it from inside, gives a section edge per prong") {
-  // The U of the test above, cut at y = 1 along the bottom of its notch: the notch's corners are reflex, so
-  // the line goes on inside the face past them; the section is (0, 1)-(1, 1) and (2, 1)-(3, 1), not one
-  // edge over the notch's side.
-  PolygonSoup u;
-  for (auto [x, y] :
-       std::vector<std::pair<double, double>>{{0, 0}, {3, 0}, {3, 2}, {2, 2}, {2, 1}, {1, 1}, {1, 2}, {0, 2}})
-    u.positions.push_back({x, y, 0});
-  u.add_face({0, 1, 2, 3, 4, 5, 6, 7});
-  u.add_face({7, 6, 5, 4, 3, 2, 1, 0});
-  const Mesh pillow = build_mesh(u);
+  // The U cut at y = 1 along the bottom of its notch: the notch's corners are reflex, so the line goes on
+  // inside the face past them; the section is (0, 1)-(1, 1) and (2, 1)-(3, 1), not one edge over the notch's
+  // side.
+  const Mesh pillow = u_pillow();
   // Two edges split (x = 0 and x = 3), two section edges in each of the two faces.
   apply_and_check(pillow, "plane_cut", plane({0, 1, 0}, {0, 1, 0}), {2, 2 + 4, 4});
   const Mesh after = applied(pillow, "plane_cut", plane({0, 1, 0}, {0, 1, 0}));
@@ -561,9 +516,7 @@ TEST_CASE("plane_cut: random planes through random meshes: no edge crosses, loop
   };
   const std::vector<std::string> convex = {
       "tetrahedron", "cube", "octahedron", "pentagonal prism", "hexagonal prism", "octagonal prism"};
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const std::string& name, const Mesh& mesh) {
     const bool is_convex = std::find(convex.begin(), convex.end(), name) != convex.end();
     glm::dvec3 centre(0.0);
     for (VertexId v : mesh.vertices()) centre += mesh.position(v);
@@ -595,7 +548,7 @@ TEST_CASE("plane_cut: random planes through random meshes: no edge crosses, loop
     const long s = long(probe.apply("plane_cut", plane(centre, n)).handles<EdgeId>("edges").size());
     CHECK(s >= (crossing > 0 ? 1 : 0));
     apply_and_check(mesh, "plane_cut", plane(centre, n), {crossing, crossing + s, s});
-  }
+  });
 }
 
 TEST_CASE("plane_cut refusals") {
@@ -663,9 +616,7 @@ TEST_CASE(
     "every vertex, edge and face of every modeling mesh and of a messy cube: cut, or refused unchanged") {
   auto meshes = test::modeling_meshes();
   meshes.push_back({"messy cube", messy_cube()});
-  for (const auto& [name, mesh] : meshes) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_mesh(meshes, [&](const Mesh& mesh) {
     for (const std::string op : {"truncate_vertex", "chamfer_edge", "cut_face"}) {
       CAPTURE(op);
       const std::uint32_t count = op == "truncate_vertex" ? mesh.vertex_capacity()
@@ -689,5 +640,5 @@ TEST_CASE(
         test::require_valid(m);
       }
     }
-  }
+  });
 }

@@ -40,7 +40,10 @@ const std::vector<std::string> all_styles = {"cubical",         "doo-sabin",    
 const std::vector<std::string> segment_styles = {"cubical", "doo-sabin", "octahedral", "dodecahedral",
                                                  "icosahedral"};
 
+using test::apply_and_check;
+using test::Delta;
 using test::euler_characteristic;
+using test::refused_parameter;
 using test::signed_volume;
 
 // The change of V, E and F that a style makes on a face of n sides with s segments, from what it builds:
@@ -51,9 +54,6 @@ using test::signed_volume;
 // ring, an octahedral ring and a cubical ring, with the two middle rings' edges deleted (-n edges and -n
 // faces each); icosahedral an octahedral ring, a cubical ring with the ring between deleted, then n
 // stellated pentagons (+1, +5, +4 each); dome five cubical rings and a stellation.
-struct Delta {
-  long v, e, f;
-};
 Delta expected_delta(const std::string& style, long n, long s) {
   if (style == "cubical" || style == "doo-sabin") return {n * s, 2 * n * s, n * s};
   if (style == "octahedral") return {n * s, 3 * n * s, 2 * n * s};
@@ -119,43 +119,6 @@ std::vector<FaceId> one_face_per_size(const Mesh& m) {
   return out;
 }
 
-// Applies `op` through the shared editor round trip, then checks what every operation must keep: the counts,
-// the Euler characteristic, the hole faces and the orientation (a closed mesh's volume keeps its sign).
-// Returns the outputs.
-Params apply_and_check(const Mesh& start, const std::string& op, const Params& params, Delta delta) {
-  Params out;
-  const Mesh after = test::check_editor_round_trip(start, op, params, &out);
-  CHECK(long(after.num_vertices()) == long(start.num_vertices()) + delta.v);
-  CHECK(long(after.num_edges()) == long(start.num_edges()) + delta.e);
-  CHECK(long(after.num_faces()) == long(start.num_faces()) + delta.f);
-  CHECK(euler_characteristic(after) == euler_characteristic(start));
-  CHECK(after.num_hole_faces() == start.num_hole_faces());
-  if (start.num_hole_faces() == 0 && std::abs(signed_volume(start)) > 1e-9)
-    CHECK((signed_volume(after) > 0) == (signed_volume(start) > 0));
-  return out;
-}
-
-// The parameter a refused apply names; the mesh and the log must stay as they were.
-std::string refused_parameter(Editor& ed, const std::string& op, const Params& params,
-                              const std::string& message_part = {}) {
-  const Mesh before = ed.mesh();
-  const std::size_t logged = ed.log().size();
-  std::string parameter = "(accepted)";
-  try {
-    ed.apply(op, params);
-  } catch (const ParameterError& e) {
-    parameter = e.parameter();
-    const std::string message = e.what();
-    CAPTURE(message);
-    CHECK(message.rfind(op + ": ", 0) == 0);
-    CHECK(message.find(parameter) != std::string::npos);
-    if (!message_part.empty()) CHECK(message.find(message_part) != std::string::npos);
-  }
-  CHECK(ed.mesh() == before);
-  CHECK(ed.log().size() == logged);
-  return parameter;
-}
-
 // The new vertex joined by an edge to `old` (the rung of a cubical ring).
 VertexId new_neighbour(const Mesh& m, VertexId old, std::uint32_t first_new_vertex) {
   for (VertexId w : neighbours(m, old)) {
@@ -187,19 +150,35 @@ VertexId cube_vertex(const Mesh& m, double x, double y, double z) {
   return VertexId();
 }
 
+// An editor on an open nx x ny grid with the faces the refusals need: the grid's hole face, a point sphere's
+// face and the faces of three points on a line (no normal).
+struct RefusalScene {
+  Editor ed;
+  FaceId hole, sphere_face;
+  FaceManifold flat;
+
+  RefusalScene(int nx, int ny) {
+    ed.set_mesh(build_mesh(test::grid_soup(nx, ny)));
+    for (FaceId f : ed.mesh().faces()) {
+      if (ed.mesh().is_hole(f)) hole = f;
+    }
+    sphere_face = ed.mesh().face(ed.mesh().corner(ed.create_vertex({9, 9, 9})));
+    flat = ed.create_face_manifold(std::vector<glm::dvec3>{{0, 0, 5}, {1, 0, 5}, {2, 0, 5}});
+  }
+};
+
 }  // namespace
 
 TEST_CASE("extrude_face: every style's counts and new faces on faces of 3 to 8 sides") {
-  for (const auto& [name, mesh] : meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+  test::for_each_mesh(meshes(), [&](const Mesh& mesh) {
     for (FaceId f : one_face_per_size(mesh)) {
       const auto n = mesh.size(f);
       for (const std::string& style : all_styles) {
-        CAPTURE(name_);
         CAPTURE(n);
         CAPTURE(style);
         const Params out = apply_and_check(mesh, "extrude_face", {{"face", f}, {"style", style}},
-                                           expected_delta(style, n, 1));
+                                           expected_delta(style, n, 1))
+                               .out;
         Mesh after = mesh;
         apply_operation(after, "extrude_face", {{"face", f}, {"style", style}});
         CHECK(shapes_around_new_vertices(after, mesh.vertex_capacity()) == expected_shapes(style, n, 1));
@@ -222,20 +201,18 @@ TEST_CASE("extrude_face: every style's counts and new faces on faces of 3 to 8 s
         }
       }
     }
-  }
+  });
 }
 
 TEST_CASE("extrude_face: segments 1 to 8 repeat the unit of the styles that end in a moved face") {
   const std::vector<test::ModelingMesh> some = {{"cube", build_mesh(test::cube_soup())},
                                                 {"pentagonal prism", build_mesh(test::prism_soup(5))},
                                                 {"open grid", build_mesh(test::grid_soup(3, 2))}};
-  for (const auto& [name, mesh] : some) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+  test::for_each_mesh(some, [&](const Mesh& mesh) {
     const FaceId f = one_face_per_size(mesh).back();
     const auto n = mesh.size(f);
     for (const std::string& style : segment_styles) {
       for (long s = 1; s <= 8; ++s) {
-        CAPTURE(name_);
         CAPTURE(style);
         CAPTURE(s);
         apply_and_check(
@@ -247,17 +224,15 @@ TEST_CASE("extrude_face: segments 1 to 8 repeat the unit of the styles that end 
         CHECK(shapes_around_new_vertices(after, mesh.vertex_capacity()) == expected_shapes(style, n, s));
       }
     }
-  }
+  });
 }
 
 TEST_CASE("extrude_face: a cubical extrusion along the normal adds distance times area to the volume") {
-  for (const auto& [name, mesh] : meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    if (mesh.num_hole_faces() != 0) continue;
+  test::for_each_mesh(meshes(), [&](const Mesh& mesh) {
+    if (mesh.num_hole_faces() != 0) return;
     for (FaceId f : one_face_per_size(mesh)) {
       for (double d : {0.5, 1.5, -0.125}) {
         for (long s : {1, 3}) {
-          CAPTURE(name_);
           CAPTURE(d);
           CAPTURE(s);
           Mesh m = mesh;
@@ -267,7 +242,7 @@ TEST_CASE("extrude_face: a cubical extrusion along the normal adds distance time
         }
       }
     }
-  }
+  });
   // The cube of side 2: 8 + 4d.
   Mesh cube = build_mesh(test::cube_soup());
   apply_operation(cube, "extrude_face", {{"face", cube_top(cube)}, {"distance", 0.75}});
@@ -279,13 +254,10 @@ TEST_CASE("extrude_face: stellate and double-stellate add pyramids of volume d A
   // second apexes of double-stellate, the centroids of (c, p_i, p_i+1), lie in the face and cut a third of
   // each of those triangles away, so the apex stands over a star of area 2A/3.
   for (const char* name : {"tetrahedron", "cube", "octahedron", "pentagonal prism", "octagonal prism"}) {
-    for (const auto& [mesh_name, mesh] : meshes()) {
-      const auto& mesh_name_ = mesh_name;  // clang 14 cannot capture a structured binding
-      const auto& mesh_ = mesh;            // clang 14 cannot capture a structured binding
-      if (mesh_name != name) continue;
+    test::for_each_mesh(meshes(), [&](const std::string& mesh_name, const Mesh& mesh) {
+      if (mesh_name != name) return;
       for (FaceId f : one_face_per_size(mesh)) {
-        CAPTURE(mesh_name_);
-        CAPTURE(mesh_.size(f));
+        CAPTURE(mesh.size(f));
         const double area = face_area(mesh, f), volume = signed_volume(mesh);
         Mesh once = mesh, twice = mesh;
         apply_operation(once, "extrude_face", {{"face", f}, {"style", "stellate"}, {"distance", 0.8}});
@@ -294,7 +266,7 @@ TEST_CASE("extrude_face: stellate and double-stellate add pyramids of volume d A
         CHECK(signed_volume(once) == doctest::Approx(volume + 0.8 * area / 3));
         CHECK(signed_volume(twice) == doctest::Approx(volume + 2 * 0.8 * area / 9));
       }
-    }
+    });
   }
 }
 
@@ -431,7 +403,8 @@ TEST_CASE("extrude_face: a list of faces extrudes each on its own, as one operat
     CAPTURE(style);
     const Delta one = expected_delta(style, 4, 1);
     const Params out = apply_and_check(cube, "extrude_face", {{"faces", faces}, {"style", style}},
-                                       {3 * one.v, 3 * one.e, 3 * one.f});
+                                       {3 * one.v, 3 * one.e, 3 * one.f})
+                           .out;
     const bool cone = style == "stellate" || style == "double-stellate" || style == "dome";
     CHECK(out.has(cone ? "vertices" : "faces"));
     CHECK((cone ? out.get("vertices") : out.get("faces")).as_integers().size() == 3);
@@ -461,27 +434,21 @@ TEST_CASE("extrude_face: hole flags stay where they were on an open mesh") {
 }
 
 TEST_CASE("extrude_face: bad arguments are refused, naming the parameter, with the mesh unchanged") {
-  Editor ed;
-  ed.set_mesh(build_mesh(test::grid_soup(3, 2)));
-  FaceId hole;
-  for (FaceId f : ed.mesh().faces()) {
-    if (ed.mesh().is_hole(f)) hole = f;
-  }
-  const VertexId sphere = ed.create_vertex({9, 9, 9});
-  const FaceId sphere_face = ed.mesh().face(ed.mesh().corner(sphere));
-  const FaceManifold flat = ed.create_face_manifold(std::vector<glm::dvec3>{{0, 0, 5}, {1, 0, 5}, {2, 0, 5}});
+  RefusalScene scene(3, 2);
+  Editor& ed = scene.ed;
   const FaceId f = FaceId(0), g = FaceId(1);
   const std::string op = "extrude_face";
   CHECK(refused_parameter(ed, op, {{"face", f}, {"faces", std::vector<FaceId>{g}}}, "exactly one") == "face");
   CHECK(refused_parameter(ed, op, {{"distance", 1.0}}, "exactly one") == "face");
   CHECK(refused_parameter(ed, op, {{"faces", std::vector<FaceId>{f, g, f}}}, "listed twice") == "faces");
   CHECK(refused_parameter(ed, op, {{"faces", std::vector<std::int64_t>{}}}, "empty") == "faces");
-  CHECK(refused_parameter(ed, op, {{"face", hole}}, "hole") == "face");
-  CHECK(refused_parameter(ed, op, {{"faces", std::vector<FaceId>{f, hole}}}, "hole") == "faces");
-  CHECK(refused_parameter(ed, op, {{"face", sphere_face}}, "point sphere") == "face");
-  CHECK(refused_parameter(ed, op, {{"faces", std::vector<FaceId>{sphere_face}}}, "point sphere") == "faces");
+  CHECK(refused_parameter(ed, op, {{"face", scene.hole}}, "hole") == "face");
+  CHECK(refused_parameter(ed, op, {{"faces", std::vector<FaceId>{f, scene.hole}}}, "hole") == "faces");
+  CHECK(refused_parameter(ed, op, {{"face", scene.sphere_face}}, "point sphere") == "face");
+  CHECK(refused_parameter(ed, op, {{"faces", std::vector<FaceId>{scene.sphere_face}}}, "point sphere") ==
+        "faces");
   CHECK(refused_parameter(ed, op, {{"face", FaceId(ed.mesh().face_capacity())}}) == "face");
-  CHECK(refused_parameter(ed, op, {{"face", flat.front}}, "no normal") == "face");
+  CHECK(refused_parameter(ed, op, {{"face", scene.flat.front}}, "no normal") == "face");
   CHECK(refused_parameter(ed, op, {{"face", f}, {"direction", glm::dvec3(0, 0, 0)}}, "no direction") ==
         "direction");
   CHECK(refused_parameter(ed, op, {{"face", f}, {"segments", 0}}) == "segments");
@@ -584,13 +551,12 @@ TEST_CASE("extrude_face and inset_face: the parameters and defaults of the contr
 // ---- inset_face ----------------------------------------------------------------------------------------
 
 TEST_CASE("inset_face: a copy inside every face size, joined by n quads: V+n, E+2n, F+n") {
-  for (const auto& [name, mesh] : meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
+  test::for_each_mesh(meshes(), [&](const Mesh& mesh) {
     for (FaceId f : one_face_per_size(mesh)) {
       const long n = mesh.size(f);
-      CAPTURE(name_);
       CAPTURE(n);
-      const Params out = apply_and_check(mesh, "inset_face", {{"face", f}, {"depth", 0.1}}, {n, 2 * n, n});
+      const Params out =
+          apply_and_check(mesh, "inset_face", {{"face", f}, {"depth", 0.1}}, {n, 2 * n, n}).out;
       Mesh m = mesh;
       apply_operation(m, "inset_face", {{"face", f}});
       CHECK(shapes_around_new_vertices(m, mesh.vertex_capacity()) == expected_shapes("cubical", n, 1));
@@ -602,17 +568,15 @@ TEST_CASE("inset_face: a copy inside every face size, joined by n quads: V+n, E+
       }
       CHECK(out.has("face"));
     }
-  }
+  });
 }
 
 TEST_CASE("inset_face: depth raises the copy along the normal, a frustum of volume h/3 (A + kA k + kA)") {
   // The copy is the face scaled by k = 1 - amount about its centroid and raised by h: the solid between is
   // a frustum of a pyramid, of bases A and k^2 A: h/3 (A + k^2 A + k A). With depth 0 the volume stays.
-  for (const auto& [name, mesh] : meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    if (mesh.num_hole_faces() != 0) continue;
+  test::for_each_mesh(meshes(), [&](const Mesh& mesh) {
+    if (mesh.num_hole_faces() != 0) return;
     for (FaceId f : one_face_per_size(mesh)) {
-      CAPTURE(name_);
       const double area = face_area(mesh, f), volume = signed_volume(mesh);
       for (double amount : {0.25, 0.6}) {
         for (double h : {0.0, 0.4, -0.2}) {
@@ -623,7 +587,7 @@ TEST_CASE("inset_face: depth raises the copy along the normal, a frustum of volu
         }
       }
     }
-  }
+  });
 }
 
 TEST_CASE("inset_face: a list of faces, and the refusals") {
@@ -636,30 +600,23 @@ TEST_CASE("inset_face: a list of faces, and the refusals") {
     apply_operation(apart, "inset_face", {{"face", f}, {"amount", 0.5}});
   CHECK(together == apart);
 
-  Editor ed;
-  ed.set_mesh(build_mesh(test::grid_soup(2, 2)));
-  FaceId hole;
-  for (FaceId f : ed.mesh().faces()) {
-    if (ed.mesh().is_hole(f)) hole = f;
-  }
-  const VertexId sphere = ed.create_vertex({9, 9, 9});
-  const FaceManifold flat = ed.create_face_manifold(std::vector<glm::dvec3>{{0, 0, 5}, {1, 0, 5}, {2, 0, 5}});
+  RefusalScene scene(2, 2);
+  Editor& ed = scene.ed;
   const std::string op = "inset_face";
   const FaceId f = FaceId(0);
   CHECK(refused_parameter(ed, op, {{"face", f}, {"faces", std::vector<FaceId>{f}}}, "exactly one") == "face");
   CHECK(refused_parameter(ed, op, {}, "exactly one") == "face");
   CHECK(refused_parameter(ed, op, {{"faces", std::vector<FaceId>{f, f}}}, "listed twice") == "faces");
-  CHECK(refused_parameter(ed, op, {{"face", hole}}, "hole") == "face");
-  CHECK(refused_parameter(ed, op, {{"face", ed.mesh().face(ed.mesh().corner(sphere))}}, "point sphere") ==
-        "face");
-  CHECK(refused_parameter(ed, op, {{"face", flat.front}, {"depth", 1.0}}, "no normal") == "face");
+  CHECK(refused_parameter(ed, op, {{"face", scene.hole}}, "hole") == "face");
+  CHECK(refused_parameter(ed, op, {{"face", scene.sphere_face}}, "point sphere") == "face");
+  CHECK(refused_parameter(ed, op, {{"face", scene.flat.front}, {"depth", 1.0}}, "no normal") == "face");
   CHECK(refused_parameter(ed, op, {{"face", f}, {"amount", 0.0}}) == "amount");
   CHECK(refused_parameter(ed, op, {{"face", f}, {"amount", 1.0}}) == "amount");
   CHECK(refused_parameter(ed, op, {{"face", f}, {"depth", std::numeric_limits<double>::infinity()}}) ==
         "depth");
   // A degenerate face insets at depth 0.
   const Mesh before = ed.mesh();
-  ed.apply(op, {{"face", flat.front}});
+  ed.apply(op, {{"face", scene.flat.front}});
   CHECK(ed.mesh().num_faces() == before.num_faces() + 3);
   test::require_valid(ed.mesh());
 }

@@ -587,17 +587,18 @@ TEST_CASE("io: obj errors carry the line") {
       "v 0 0 0\nv 1 0 0\nv 0 1 0\n# tip\nv 0 0 1\nv 1 1 2\nv 0 1 2\nv 1 0 2\n"
       "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n"
       "f 5 6 7\nf 5 4 6\nf 5 7 4\nf 6 4 7\n";
-  // Whole files; the last two are checked by the mesh builder, which reports them at the line of the vertex.
+  // Whole files; the first and the last are checked by the mesh builder, which reports them at the line of
+  // the vertex.
   check_errors(obj, "",
                {
+                   {"# bow tie\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n", 2,
+                    "non-manifold"},
                    {"v 0 0 0\nv 1 0 0\nv 0 1 0\nf -4 -2 -1\nv 0 0 1\n", 4, "out of range"},
                    {"v 0 0 0\nv 1 oops 0\n", 2, "bad y coordinate 'oops'"},
                    {"v 0 0 0\nv 1 0\n", 2, "missing z coordinate"},
                    {"v 0 0 0\n# c\nv 1 nan 0\n", 3, "not finite"},
                    {"v 0 0 0\nv inf 0 0\n", 2, "not finite"},
                    {"v 0 0 0\nv 0 0 -1e999\n", 2, "out of range"},
-                   {"# bow tie\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv -1 0 0\nv -1 -1 0\nf 1 2 3\nf 1 4 5\n", 2,
-                    "non-manifold"},
                    {two_cones, 5, "non-manifold"},
                });
 }

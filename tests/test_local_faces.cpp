@@ -97,39 +97,52 @@ Mesh two_gons() {
   return m;
 }
 
+// Applies the face operation `op` to a copy of each modeling mesh, once for each surface face f of n sides,
+// and checks what stellate_face and subdivide_face both keep: a valid result, the counts changed by delta(n),
+// a closed mesh's volume and the hole faces; `check(mesh, f, n, m, out)` checks the rest on the result m.
+template <class Delta, class Check>
+void check_every_surface_face(const std::string& op, Delta delta, Check check) {
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
+    for (FaceId f : surface_face_list(mesh)) {
+      CAPTURE(f);
+      Mesh m = mesh;
+      const long n = mesh.size(f);
+      const Params out = apply_operation(m, op, {{"face", f}});
+      test::require_valid(m);
+      const Counts c = counts(mesh), d = delta(n);
+      CHECK(counts(m) == Counts{c.v + d.v, c.e + d.e, c.f + d.f});
+      check(mesh, f, n, m, out);
+      if (closed(mesh)) CHECK(signed_volume(m) == doctest::Approx(signed_volume(mesh)));
+      CHECK(m.num_hole_faces() == mesh.num_hole_faces());
+    }
+  });
+}
+
 }  // namespace
 
 // ---- stellate_face
 // ------------------------------------------------------------------------------------------
 
 TEST_CASE("stellate_face: every surface face of every modeling mesh: V+1, E+n, F+n-1, triangles around") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
-    for (FaceId f : surface_face_list(mesh)) {
-      CAPTURE(f);
-      Mesh m = mesh;
-      const long n = mesh.size(f);
-      const Params out = apply_operation(m, "stellate_face", {{"face", f}});
-      test::require_valid(m);
-      const Counts c = counts(mesh);
-      CHECK(counts(m) == Counts{c.v + 1, c.e + n, c.f + n - 1});
-      const auto v = out.handle<VertexId>("vertex");
-      CHECK(m.valence(v) == std::uint32_t(n));
-      CHECK(m.position(v) == face_centroid(mesh, f));
-      const auto triangles = out.handles<FaceId>("faces");
-      REQUIRE(triangles.size() == std::size_t(n));
-      for (FaceId t : triangles) {
-        CHECK(m.size(t) == 3);
-        CHECK(corner_in_face(m, v, t).valid());
-        CHECK_FALSE(m.is_hole(t));
-        // Fanned out of a convex planar face: each triangle faces the way the face did.
-        CHECK(glm::dot(face_normal(m, t), face_normal(mesh, f)) > 0.0);
-      }
-      if (closed(mesh)) CHECK(signed_volume(m) == doctest::Approx(signed_volume(mesh)));
-      CHECK(m.num_hole_faces() == mesh.num_hole_faces());
-    }
-  }
+  check_every_surface_face(
+      "stellate_face",
+      [](long n) {
+        return Counts{1, n, n - 1};
+      },
+      [](const Mesh& mesh, FaceId f, long n, const Mesh& m, const Params& out) {
+        const auto v = out.handle<VertexId>("vertex");
+        CHECK(m.valence(v) == std::uint32_t(n));
+        CHECK(m.position(v) == face_centroid(mesh, f));
+        const auto triangles = out.handles<FaceId>("faces");
+        REQUIRE(triangles.size() == std::size_t(n));
+        for (FaceId t : triangles) {
+          CHECK(m.size(t) == 3);
+          CHECK(corner_in_face(m, v, t).valid());
+          CHECK_FALSE(m.is_hole(t));
+          // Fanned out of a convex planar face: each triangle faces the way the face did.
+          CHECK(glm::dot(face_normal(m, t), face_normal(mesh, f)) > 0.0);
+        }
+      });
 }
 
 TEST_CASE("stellate_face: the height raises a pyramid of volume area * height / 3") {
@@ -183,13 +196,11 @@ TEST_CASE("stellate_face: faces with a dangling edge and 2-gons") {
 }
 
 TEST_CASE("stellate_face: undo, redo and the log, on every modeling mesh") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     const FaceId f = surface_face_list(mesh).back();
     check_editor_round_trip(mesh, "stellate_face", {{"face", f}, {"height", 0.25}});
     check_editor_round_trip(mesh, "stellate_face", {{"faces", surface_face_list(mesh)}});
-  }
+  });
 }
 
 TEST_CASE("stellate_face: refusals name the argument and change nothing") {
@@ -237,40 +248,32 @@ TEST_CASE("stellate_face: refusals name the argument and change nothing") {
 // -----------------------------------------------------------------------------------------
 
 TEST_CASE("subdivide_face: quads on every surface face of every modeling mesh: V+n+1, E+2n, F+n-1") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
-    for (FaceId f : surface_face_list(mesh)) {
-      CAPTURE(f);
-      Mesh m = mesh;
-      const long n = mesh.size(f);
-      const Params out = apply_operation(m, "subdivide_face", {{"face", f}});
-      test::require_valid(m);
-      const Counts c = counts(mesh);
-      CHECK(counts(m) == Counts{c.v + n + 1, c.e + 2 * n, c.f + n - 1});
-      const auto center = out.handle<VertexId>("vertex");
-      CHECK(m.position(center) == face_centroid(mesh, f));
-      CHECK(m.valence(center) == std::uint32_t(n));
-      const auto midpoints = out.handles<VertexId>("vertices");
-      CHECK(midpoints.size() == std::size_t(n));
-      for (VertexId mid : midpoints) CHECK(m.valence(mid) == 3);
-      const auto quads = out.handles<FaceId>("faces");
-      REQUIRE(quads.size() == std::size_t(n));
-      for (FaceId q : quads) {
-        CHECK(m.size(q) == 4);
-        CHECK(glm::dot(face_normal(m, q), face_normal(mesh, f)) > 0.0);
-      }
-      // Each face across an edge of f gained that edge's midpoint: one side more per edge it shares with f.
-      std::vector<FaceId> across;
-      for (FaceId g : neighbours(mesh, f)) across.push_back(g);
-      for (FaceId g : across) {
-        CAPTURE(g);
-        CHECK(m.size(g) == mesh.size(g) + std::count(across.begin(), across.end(), g));
-      }
-      if (closed(mesh)) CHECK(signed_volume(m) == doctest::Approx(signed_volume(mesh)));
-      CHECK(m.num_hole_faces() == mesh.num_hole_faces());
-    }
-  }
+  check_every_surface_face(
+      "subdivide_face",
+      [](long n) {
+        return Counts{n + 1, 2 * n, n - 1};
+      },
+      [](const Mesh& mesh, FaceId f, long n, const Mesh& m, const Params& out) {
+        const auto center = out.handle<VertexId>("vertex");
+        CHECK(m.position(center) == face_centroid(mesh, f));
+        CHECK(m.valence(center) == std::uint32_t(n));
+        const auto midpoints = out.handles<VertexId>("vertices");
+        CHECK(midpoints.size() == std::size_t(n));
+        for (VertexId mid : midpoints) CHECK(m.valence(mid) == 3);
+        const auto quads = out.handles<FaceId>("faces");
+        REQUIRE(quads.size() == std::size_t(n));
+        for (FaceId q : quads) {
+          CHECK(m.size(q) == 4);
+          CHECK(glm::dot(face_normal(m, q), face_normal(mesh, f)) > 0.0);
+        }
+        // Each face across an edge of f gained that edge's midpoint: one side more per edge it shares with f.
+        std::vector<FaceId> across;
+        for (FaceId g : neighbours(mesh, f)) across.push_back(g);
+        for (FaceId g : across) {
+          CAPTURE(g);
+          CHECK(m.size(g) == mesh.size(g) + std::count(across.begin(), across.end(), g));
+        }
+      });
 }
 
 TEST_CASE("subdivide_face: the cube's top face by hand; the neighbours become pentagons") {
@@ -291,9 +294,7 @@ TEST_CASE("subdivide_face: the cube's top face by hand; the neighbours become pe
 }
 
 TEST_CASE("subdivide_face: triangles is stellate_face with height 0") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     const FaceId f = surface_face_list(mesh).front();
     Mesh a = mesh, b = mesh;
     const Params out = apply_operation(a, "subdivide_face", {{"face", f}, {"style", "triangles"}});
@@ -303,7 +304,7 @@ TEST_CASE("subdivide_face: triangles is stellate_face with height 0") {
     const Counts c = counts(mesh);
     CHECK(counts(a) == Counts{c.v + 1, c.e + n, c.f + n - 1});
     CHECK(out.handles<FaceId>("faces").size() == std::size_t(n));
-  }
+  });
 }
 
 TEST_CASE("subdivide_face: an edge with the face on both sides gets one midpoint; 2-gons") {
@@ -330,13 +331,11 @@ TEST_CASE("subdivide_face: the neighbouring hole grows by a side; undo, redo and
   apply_operation(m, "subdivide_face", {{"face", FaceId(0)}});
   CHECK(m.size(first_hole(m)) == 12);  // 10 + 2
   CHECK(m.num_hole_faces() == 1);
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     check_editor_round_trip(mesh, "subdivide_face", {{"face", surface_face_list(mesh).back()}});
     check_editor_round_trip(mesh, "subdivide_face",
                             {{"face", surface_face_list(mesh).front()}, {"style", "triangles"}});
-  }
+  });
 }
 
 TEST_CASE("subdivide_face: refusals name the argument and change nothing") {
@@ -363,9 +362,7 @@ TEST_CASE("subdivide_face: refusals name the argument and change nothing") {
 // --------------------------------------------------------------------------------------------
 
 TEST_CASE("triangulate: every modeling mesh: E+(n-3), F+(n-3) per face of n > 3 sides, holes left alone") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     long diagonals = 0;
     for (FaceId f : surface_faces(mesh)) diagonals += std::max(0L, long(mesh.size(f)) - 3);
     Mesh m = mesh;
@@ -381,7 +378,7 @@ TEST_CASE("triangulate: every modeling mesh: E+(n-3), F+(n-3) per face of n > 3 
     long cut_faces = 0;
     for (FaceId f : surface_faces(mesh)) cut_faces += mesh.size(f) > 3 ? long(mesh.size(f)) - 2 : 0;
     CHECK(long(out.handles<FaceId>("faces").size()) == cut_faces);
-  }
+  });
 }
 
 TEST_CASE("triangulate: the cube by hand, and a chosen list") {
@@ -513,11 +510,7 @@ TEST_CASE("triangulate: faces visiting a vertex twice or three times; 2-gons sta
 }
 
 TEST_CASE("triangulate: undo, redo and the log; refusals") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
-    check_editor_round_trip(mesh, "triangulate", {});
-  }
+  test::for_each_modeling_mesh([&](const Mesh& mesh) { check_editor_round_trip(mesh, "triangulate", {}); });
   const Mesh cube = test::cube();
   CHECK(test::check_refusal(cube, "triangulate", {{"faces", "1,2,1"}}, "faces").find("f1 twice") !=
         std::string::npos);
@@ -534,10 +527,7 @@ TEST_CASE("triangulate: undo, redo and the log; refusals") {
 // ------------------------------------------------------------------------------------
 
 TEST_CASE("reverse_orientation: every face reversed on every modeling mesh; twice gives the faces back") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    const auto& mesh_ = mesh;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     Mesh m = mesh;
     apply_operation(m, "reverse_orientation");
     test::require_valid(m);
@@ -551,7 +541,7 @@ TEST_CASE("reverse_orientation: every face reversed on every modeling mesh; twic
     }
     const std::vector<long> genus_before = [&] {
       std::vector<long> g;
-      for (const auto& c : validate(mesh_).components) g.push_back(c.genus);
+      for (const auto& c : validate(mesh).components) g.push_back(c.genus);
       return g;
     }();
     std::vector<long> genus_after;
@@ -561,7 +551,7 @@ TEST_CASE("reverse_orientation: every face reversed on every modeling mesh; twic
     test::require_valid(m);
     CHECK(face_cycles(m) == face_cycles(mesh));
     if (closed(mesh)) CHECK(signed_volume(m) == doctest::Approx(signed_volume(mesh)));
-  }
+  });
 }
 
 TEST_CASE("reverse_orientation: meshes with point spheres, dangling edges, 2-gons, holes from set_hole") {
@@ -640,24 +630,19 @@ TEST_CASE("reverse_orientation: named values follow their elements") {
 }
 
 TEST_CASE("reverse_orientation: undo, redo and the log on every modeling mesh") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
-    check_editor_round_trip(mesh, "reverse_orientation", {});
-  }
+  test::for_each_modeling_mesh(
+      [&](const Mesh& mesh) { check_editor_round_trip(mesh, "reverse_orientation", {}); });
 }
 
 // ---- transform
 // ----------------------------------------------------------------------------------------------
 
 TEST_CASE("transform: the defaults change nothing, on every modeling mesh") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     Mesh m = mesh;
     apply_operation(m, "transform");
     CHECK(m == mesh);
-  }
+  });
 }
 
 TEST_CASE("transform: translate, scale and rotate, in that order about the centre") {
@@ -708,9 +693,7 @@ TEST_CASE("transform: translate, scale and rotate, in that order about the centr
 }
 
 TEST_CASE("transform: counts and volume sign on every modeling mesh; undo, redo and the log") {
-  for (const auto& [name, mesh] : test::modeling_meshes()) {
-    const auto& name_ = name;  // clang 14 cannot capture a structured binding
-    CAPTURE(name_);
+  test::for_each_modeling_mesh([&](const Mesh& mesh) {
     const Params params = {{"scale", glm::dvec3(0.5, -2, -3)},
                            {"rotate_axis", glm::dvec3(1, -2, 0.5)},
                            {"rotate_degrees", 33.0},
@@ -718,7 +701,7 @@ TEST_CASE("transform: counts and volume sign on every modeling mesh; undo, redo 
     const Mesh m = check_editor_round_trip(mesh, "transform", params);
     CHECK(counts(m) == counts(mesh));
     if (closed(mesh)) CHECK(signed_volume(m) == doctest::Approx(signed_volume(mesh) * 0.5 * 2 * 3));
-  }
+  });
 }
 
 TEST_CASE("transform: refusals name the argument and change nothing") {

@@ -21,6 +21,7 @@
 #include <dlfl/validate.h>
 #include "log_helpers.h"
 #include "modeling_checks.h"
+#include "modeling_meshes.h"
 #include "scheme_meshes.h"
 #include "test_helpers.h"
 #include "test_meshes.h"
@@ -37,19 +38,6 @@ inline PolygonSoup triangulated(const PolygonSoup& soup) {
     for (std::size_t k = 1; k + 1 < face.size(); ++k) t.add_face({face[0], face[k], face[k + 1]});
   }
   return t;
-}
-
-/// Both soups in one, the second moved by `offset`: a mesh of two components.
-inline PolygonSoup disjoint_union(const PolygonSoup& a, const PolygonSoup& b, const glm::dvec3& offset) {
-  PolygonSoup u = a;
-  const auto base = static_cast<std::uint32_t>(a.positions.size());
-  for (const auto& p : b.positions) u.positions.push_back(p + offset);
-  for (std::size_t f = 0; f < b.num_faces(); ++f) {
-    std::vector<std::uint32_t> face;
-    for (std::uint32_t k : b.face(f)) face.push_back(base + k);
-    u.add_face(face);
-  }
-  return u;
 }
 
 /// Closed triangle meshes of genus 0 to 3 with valences from 3 to 8, one of two components.

@@ -67,6 +67,14 @@ class Session {
     return H(pick(capacity + 2));
   }
 
+  // handle() of the one of the handle types H whose kind `type` names (ParamType::face: a FaceId).
+  template <class... H>
+  Value handle_of(ParamType type, const Mesh& m) {
+    Value out;
+    ((to_string(type) == to_string(element_kind_v<H>) ? void(out = handle<H>(m)) : void()), ...);
+    return out;
+  }
+
   Value value_for(const ParamSpec& p, const Mesh& m) {
     switch (p.type) {
       case ParamType::boolean:
@@ -87,13 +95,10 @@ class Session {
       case ParamType::point:
         return glm::dvec3(2 * unit() - 1, 2 * unit() - 1, 2 * unit() - 1);
       case ParamType::vertex:
-        return handle<VertexId>(m);
       case ParamType::edge:
-        return handle<EdgeId>(m);
       case ParamType::face:
-        return handle<FaceId>(m);
       case ParamType::corner:
-        return handle<CornerId>(m);
+        return handle_of<VertexId, EdgeId, FaceId, CornerId>(p.type, m);
       case ParamType::numbers:
         return chance(0.5) ? std::vector<double>{unit()} : std::vector<double>{unit(), unit(), unit()};
       case ParamType::points: {
