@@ -3,15 +3,18 @@
 
 #include <dlfl/operations/menger.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
+#include <iterator>
 #include <limits>
+#include <span>
+#include <vector>
 
 #include <dlfl/format.h>
 #include <dlfl/geometry.h>
 #include <dlfl/operations/connect_faces.h>
-#include <dlfl/operations/detail/extrusion_rings.h>
 #include <dlfl/operations/detail/fractal_cuts.h>
 #include <dlfl/operations/detail/operation_table.h>
 #include <dlfl/operations/detail/refusal.h>
@@ -24,23 +27,23 @@ constexpr std::string_view op_name = "menger";
 
 // Everything menger builds, decided on the unchanged mesh.
 struct Plan {
-  std::vector<EdgeId> edges;
+  // The cuts at (1 - scale) / 2 from each end of each edge.
+  detail::EdgeCuts cuts;
   // The faces with edges, and where each one's corners start in `corners`.
   std::vector<FaceId> faces;
   std::vector<std::size_t> face_start;
   std::vector<CornerId> corners;
-  // Per edge index: the cuts at (1 - scale) / 2 from from(e) and from to(e).
-  std::vector<std::array<glm::dvec3, 2>> cuts;
   // Per corner index: its corner of the centre face.
   std::vector<glm::dvec3> centre;
   // Per vertex index: its copy in the skeleton.
   std::vector<glm::dvec3> skeleton;
 };
 
-double mean_edge_length(const Mesh& m, std::span<const CornerId> corners) {
+double mean_edge_length(const Mesh& m, FaceId f) {
   double sum = 0.0;
-  for (CornerId c : corners) sum += glm::length(m.position(m.vertex(m.next(c))) - m.position(m.vertex(c)));
-  return sum / double(corners.size());
+  for (CornerId c : m.corners(f))
+    sum += glm::length(m.position(m.vertex(m.next(c))) - m.position(m.vertex(c)));
+  return sum / double(m.size(f));
 }
 
 Plan planned(const Mesh& m, const MengerOptions& o) {
@@ -53,13 +56,7 @@ Plan planned(const Mesh& m, const MengerOptions& o) {
   detail::refuse_dangling_edges(m, op_name, "scale");
   Plan plan;
   std::vector<glm::dvec3> cells;
-  plan.cuts.resize(m.edge_capacity());
-  for (EdgeId e : m.edges()) {
-    plan.edges.push_back(e);
-    plan.cuts[e.index()] =
-        detail::points_in_from_ends(m.position(m.from(e)), m.position(m.to(e)), (1.0 - o.scale) / 2.0);
-    cells.insert(cells.end(), plan.cuts[e.index()].begin(), plan.cuts[e.index()].end());
-  }
+  plan.cuts = detail::plan_edge_cuts(m, (1.0 - o.scale) / 2.0, cells);
   // The skeleton: per vertex, the sums of the tunnels' straight ends over its corners in surface faces, and
   // over all its corners (for a vertex with hole faces only).
   plan.centre.resize(m.corner_capacity());
@@ -69,10 +66,9 @@ Plan planned(const Mesh& m, const MengerOptions& o) {
     if (!m.edge(m.first_corner(f)).valid()) continue;
     plan.faces.push_back(f);
     plan.face_start.push_back(plan.corners.size());
-    const std::vector<CornerId> corners = detail::corners_from(m, m.first_corner(f));
     const glm::dvec3 centroid = face_centroid(m, f);
-    const glm::dvec3 down = o.depth * mean_edge_length(m, corners) * face_normal(m, f);
-    for (CornerId c : corners) {
+    const glm::dvec3 down = o.depth * mean_edge_length(m, f) * face_normal(m, f);
+    for (CornerId c : m.corners(f)) {
       plan.corners.push_back(c);
       const glm::dvec3 w = centroid + o.scale * (m.position(m.vertex(c)) - centroid);
       plan.centre[c.index()] = w;
@@ -99,14 +95,16 @@ Plan planned(const Mesh& m, const MengerOptions& o) {
 }
 
 // Cuts the cells of one face, given as its old corners c_i (at v_i), once every edge is cut in three (a_i
-// after v_i, b_i before v_{i+1}). Returns the centre face's corner at w_0.
-CornerId cut_cells(Transaction& tx, const Plan& plan, std::span<const CornerId> corners) {
+// after v_i, b_i before v_{i+1}). `at_w` is room for the corners at the centre's vertices. Returns the
+// centre face's corner at w_0.
+CornerId cut_cells(Transaction& tx, const Plan& plan, std::span<const CornerId> corners,
+                   std::vector<CornerId>& at_w) {
   const Mesh& m = tx.mesh();
   const std::size_t n = corners.size();
   // At each corner: the cap (b_{i-1}, v_i, a_i), then its cut edge's new vertex w_i: the corner cell
   // (b_{i-1}, v_i, a_i, w_i). The edge's side 1 then starts at w_i in the rest, which runs ..., w_i, a_i,
   // b_i, w_{i+1}, ...
-  std::vector<CornerId> at_w(n);
+  at_w.assign(n, CornerId());
   for (std::size_t i = 0; i < n; ++i) {
     const EdgeId cut = detail::cut_corner(tx, corners[i]);
     tx.subdivide_edge(cut, plan.centre[corners[i].index()]);
@@ -132,24 +130,23 @@ std::vector<VertexId> menger(Transaction& tx, const MengerOptions& options) {
   // The twins, found while the old faces are as they were (a twin lies on the copy, which nothing else
   // touches until its tunnel).
   for (std::size_t i = 0; i < faces; ++i) twins[i] = copy.twin(m, plan.corners[plan.face_start[i]]);
-  for (EdgeId e : plan.edges)
-    detail::divide_in_three(tx, e, plan.cuts[e.index()][0], plan.cuts[e.index()][1]);
+  detail::cut_edges(tx, plan.cuts);
+  std::vector<CornerId> at_w;
   for (std::size_t i = 0; i < faces; ++i) {
     const std::span<const CornerId> corners(plan.corners.data() + plan.face_start[i],
                                             plan.face_start[i + 1] - plan.face_start[i]);
     ConnectFacesOptions tunnel;
-    tunnel.corner1 = cut_cells(tx, plan, corners);
+    tunnel.corner1 = cut_cells(tx, plan, corners, at_w);
     tunnel.corner2 = twins[i];
     const ConnectFacesResult r = connect_faces(tx, m.face(tunnel.corner1), m.face(tunnel.corner2), tunnel);
     if (hole[i]) {
       for (FaceId f : r.faces) tx.set_hole(f, true);
     }
   }
-  std::vector<VertexId> out;
-  for (VertexId v : copy.vertices) {
-    if (v.valid()) out.push_back(v);
-  }
-  return out;
+  std::vector<VertexId> skeleton;
+  std::copy_if(copy.vertices.begin(), copy.vertices.end(), std::back_inserter(skeleton),
+               [](VertexId v) { return v.valid(); });
+  return skeleton;
 }
 
 void check_menger(const Mesh& mesh, const MengerOptions& options) { planned(mesh, options); }
@@ -159,9 +156,8 @@ namespace detail {
 std::vector<OperationSpec> menger_operation_specs() {
   return {edit_operation(
       "menger",
-      "a Menger-sponge cut of every face: a frame of cells, and a tunnel from its centre to a skeleton "
-      "inside "
-      "(genus E - V + 1)",
+      "a Menger-sponge cut of every face: a frame of cells, and a tunnel from its centre to a "
+      "skeleton inside (genus E - V + 1)",
       {param("scale", ParamType::number, 1.0 / 3.0, "the centre face's size, as a share of its face's")
            .in_open(0.0, 1.0),
        param("depth", ParamType::number, 1.0 / 3.0,
@@ -169,9 +165,7 @@ std::vector<OperationSpec> menger_operation_specs() {
            .range(0.0, std::numeric_limits<double>::infinity(), true, false)},
       "V'=2V+4E, E'=12E, F'=6E (Euler characteristic 2V-2E)",
       [](Transaction& tx, const Params& p) {
-        Params out;
-        out["vertices"] = menger(tx, {p.number("scale"), p.number("depth")});
-        return out;
+        return Params{{"vertices", menger(tx, {p.number("scale"), p.number("depth")})}};
       },
       [](const Mesh& mesh, Params& p) {
         planned(mesh, {p.number("scale"), p.number("depth")});

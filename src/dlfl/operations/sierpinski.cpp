@@ -3,12 +3,14 @@
 
 #include <dlfl/operations/sierpinski.h>
 
+#include <algorithm>
 #include <array>
 #include <limits>
 #include <vector>
 
 #include <dlfl/operations/detail/fractal_cuts.h>
 #include <dlfl/operations/detail/operation_table.h>
+#include <dlfl/operations/detail/shell_copy.h>
 
 namespace dlfl {
 namespace {
@@ -17,10 +19,9 @@ constexpr std::string_view op_name = "sierpinski";
 
 // Everything sierpinski builds, decided on the unchanged mesh.
 struct Plan {
-  std::vector<EdgeId> edges;
+  // The tips, at `scale` from each end of each edge.
+  detail::EdgeCuts tips;
   std::vector<CornerId> corners;
-  // Per edge index: the tips at `scale` from from(e) and from to(e).
-  std::vector<std::array<glm::dvec3, 2>> tips;
   // Per corner index: on the corner's cut edge, which runs from the tip after the corner (on its edge) to
   // the tip before it, the neck points at `neck` from each end.
   std::vector<std::array<glm::dvec3, 2>> necks;
@@ -28,7 +29,7 @@ struct Plan {
 
 // The tip of vertex(c)'s piece on edge e, an edge at vertex(c).
 const glm::dvec3& tip_at(const Mesh& m, const Plan& plan, EdgeId e, CornerId c) {
-  return plan.tips[e.index()][m.from(e) == m.vertex(c) ? 0 : 1];
+  return plan.tips.at[e.index()][m.from(e) == m.vertex(c) ? 0 : 1];
 }
 
 Plan planned(const Mesh& m, const SierpinskiOptions& o) {
@@ -40,14 +41,9 @@ Plan planned(const Mesh& m, const SierpinskiOptions& o) {
       "it is a share of the cut edges from each end, and the two necks on one must not meet");
   detail::refuse_dangling_edges(m, op_name, "scale");
   Plan plan;
-  plan.tips.resize(m.edge_capacity());
-  plan.necks.resize(m.corner_capacity());
   std::vector<glm::dvec3> all;
-  for (EdgeId e : m.edges()) {
-    plan.edges.push_back(e);
-    plan.tips[e.index()] = detail::points_in_from_ends(m.position(m.from(e)), m.position(m.to(e)), o.scale);
-    all.insert(all.end(), plan.tips[e.index()].begin(), plan.tips[e.index()].end());
-  }
+  plan.tips = detail::plan_edge_cuts(m, o.scale, all);
+  plan.necks.resize(m.corner_capacity());
   plan.corners = detail::corners_with_edges(m);
   for (CornerId c : plan.corners) {
     const glm::dvec3& after = tip_at(m, plan, m.edge(c), c);
@@ -69,12 +65,14 @@ void sierpinski(Transaction& tx, const SierpinskiOptions& options) {
   // Taken before anything changes: each corner's successor among the old corners, each edge's sides.
   std::vector<CornerId> next_old(corner_capacity);
   for (CornerId c : plan.corners) next_old[c.index()] = m.next(c);
-  std::vector<std::array<CornerId, 2>> sides;
-  sides.reserve(plan.edges.size());
-  for (EdgeId e : plan.edges) sides.push_back({m.corner(e, 0), m.corner(e, 1)});
+  std::vector<std::array<CornerId, 2>> sides(m.edge_capacity());
+  for (EdgeId e : plan.tips.edges) sides[e.index()] = {m.corner(e, 0), m.corner(e, 1)};
+  std::vector<EdgeId> neck_order = detail::edge_build_order(m);
+  std::reverse(neck_order.begin(), neck_order.end());
+  std::vector<std::uint32_t> necks_left(m.vertex_capacity(), 0);
+  for (VertexId v : m.vertices()) necks_left[v.index()] = m.valence(v);
 
-  for (EdgeId e : plan.edges)
-    detail::divide_in_three(tx, e, plan.tips[e.index()][0], plan.tips[e.index()][1]);
+  detail::cut_edges(tx, plan.tips);
 
   // The caps. next(c), at the tip after c, stays in the rest of the face, leaving along the edge's middle.
   std::vector<CornerId> after_tip(corner_capacity);
@@ -101,12 +99,23 @@ void sierpinski(Transaction& tx, const SierpinskiOptions& options) {
     window_alpha[c.index()] = m.corner(side, 1);
   }
   // The necks: at each end of each edge, the neck points beside its tip in the two faces of the edge. The
-  // windows become the pieces' inner faces and the struts' floors.
+  // windows become the pieces' inner faces and the struts' floors. The order is the mirrored copy's build
+  // order reversed (see there), so that each INSERTEDGE costs what it touches: first the edges of a
+  // spanning tree of the faces, root first (each merges a window not yet reached into the rest, and then
+  // splits off the strut's floor); the 2g edges that close the handles; then the edges of a spanning tree
+  // of the vertices, leaves first, the end where the piece's last neck goes first (it splits off the
+  // piece's inner face, then the floor).
   std::vector<EdgeId> necks;
-  necks.reserve(2 * sides.size());
-  for (const auto& [s0, s1] : sides) {
-    necks.push_back(tx.insert_edge(window_alpha[s0.index()], beta[next_old[s1.index()].index()]).edge);
-    necks.push_back(tx.insert_edge(window_alpha[s1.index()], beta[next_old[s0.index()].index()]).edge);
+  necks.reserve(2 * plan.tips.edges.size());
+  auto neck_at = [&](CornerId from, CornerId across) {
+    necks_left[m.vertex(from).index()] -= 1;
+    necks.push_back(tx.insert_edge(window_alpha[from.index()], beta[next_old[across.index()].index()]).edge);
+  };
+  for (EdgeId e : neck_order) {
+    const auto [s0, s1] = sides[e.index()];
+    const bool to_first = necks_left[m.vertex(s1).index()] == 1;
+    neck_at(to_first ? s1 : s0, to_first ? s0 : s1);
+    neck_at(to_first ? s0 : s1, to_first ? s1 : s0);
   }
   if (holes) {
     // Merging a hole's window can leave a hole flag on the faces that close the pieces; they are surface.
@@ -125,9 +134,8 @@ namespace detail {
 std::vector<OperationSpec> sierpinski_operation_specs() {
   return {edit_operation(
       "sierpinski",
-      "TopMod's multi-connect midpoints: a corner piece at every vertex, a strut along every edge (genus E - "
-      "V + "
-      "1)",
+      "TopMod's multi-connect midpoints: a corner piece at every vertex, a strut along every edge "
+      "(genus E - V + 1)",
       {param("scale", ParamType::number, 0.45,
              "where each edge is cut, from each end: the size of the pieces")
            .in_open(0.0, 0.5),

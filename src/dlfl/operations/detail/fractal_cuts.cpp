@@ -21,6 +21,22 @@ std::array<VertexId, 2> divide_in_three(Transaction& tx, EdgeId e, const glm::dv
   return {first, tx.subdivide_edge(rest, near_to)};
 }
 
+EdgeCuts plan_edge_cuts(const Mesh& mesh, double t, std::vector<glm::dvec3>& positions) {
+  EdgeCuts cuts;
+  cuts.at.resize(mesh.edge_capacity());
+  for (EdgeId e : mesh.edges()) {
+    cuts.edges.push_back(e);
+    const auto& at = cuts.at[e.index()] =
+        points_in_from_ends(mesh.position(mesh.from(e)), mesh.position(mesh.to(e)), t);
+    positions.insert(positions.end(), at.begin(), at.end());
+  }
+  return cuts;
+}
+
+void cut_edges(Transaction& tx, const EdgeCuts& cuts) {
+  for (EdgeId e : cuts.edges) divide_in_three(tx, e, cuts.at[e.index()][0], cuts.at[e.index()][1]);
+}
+
 EdgeId cut_corner(Transaction& tx, CornerId c) {
   const Mesh& m = tx.mesh();
   // insert_edge(c1, c2) leaves c2 ... (before c1) plus a new corner at vertex(c1) as one part: here the

@@ -15,6 +15,20 @@ namespace dlfl::detail {
 /// The points at share t of the way from a to b and from b to a.
 std::array<glm::dvec3, 2> points_in_from_ends(const glm::dvec3& a, const glm::dvec3& b, double t);
 
+/// Where every edge is cut in three: the edges, and per edge index the points at share t of its length from
+/// from(e) and from to(e).
+struct EdgeCuts {
+  std::vector<EdgeId> edges;
+  std::vector<std::array<glm::dvec3, 2>> at;
+};
+
+/// The cuts of every edge of the mesh at share t from each end; their points are appended to `positions`
+/// (for the finiteness check of the caller's plan).
+EdgeCuts plan_edge_cuts(const Mesh& mesh, double t, std::vector<glm::dvec3>& positions);
+
+/// Cuts every planned edge in three (divide_in_three): V+2E, E+2E.
+void cut_edges(Transaction& tx, const EdgeCuts& cuts);
+
 /// Cuts edge e in three by two new vertices, at `near_from` (on the piece that keeps e, from(e) to it) and
 /// then at `near_to`: V+2, E+2, F+0; each face beside e grows by two corners. Corners keep their vertices.
 /// Returns the two vertices in that order.
