@@ -51,6 +51,7 @@
 #include <dlfl/operations/flip_edge.h>
 #include <dlfl/operations/inset_face.h>
 #include <dlfl/operations/make_hole.h>
+#include <dlfl/operations/menger.h>
 #include <dlfl/operations/operation.h>
 #include <dlfl/operations/operation_text.h>
 #include <dlfl/operations/planarize.h>
@@ -59,6 +60,7 @@
 #include <dlfl/operations/remove_valence2.h>
 #include <dlfl/operations/reverse_orientation.h>
 #include <dlfl/operations/rind.h>
+#include <dlfl/operations/sierpinski.h>
 #include <dlfl/operations/smooth.h>
 #include <dlfl/operations/spheralize.h>
 #include <dlfl/operations/splice_corners.h>

@@ -43,6 +43,10 @@ std::vector<OperationSpec> rind_operation_specs();       // rind.cpp
 std::vector<OperationSpec> wireframe_operation_specs();  // wireframe.cpp
 std::vector<OperationSpec> columns_operation_specs();    // columns.cpp
 
+// High genus (docs/modeling.md)
+std::vector<OperationSpec> sierpinski_operation_specs();  // sierpinski.cpp
+std::vector<OperationSpec> menger_operation_specs();      // menger.cpp
+
 // Cutting (docs/modeling.md)
 std::vector<OperationSpec>
 cutting_operation_specs();  // cutting.cpp (truncate_vertex, chamfer_edge, cut_face)
@@ -96,6 +100,10 @@ inline constexpr std::array operation_files = {
     &rind_operation_specs,
     &wireframe_operation_specs,
     &columns_operation_specs,
+
+    // High genus
+    &sierpinski_operation_specs,
+    &menger_operation_specs,
 
     // Cutting
     &cutting_operation_specs,
