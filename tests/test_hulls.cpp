@@ -26,6 +26,7 @@
 #include <dlfl/operations/convex_hull.h>
 #include <dlfl/operations/dual_hull.h>
 
+#include "brute_force_hull.h"
 #include "modeling_checks.h"
 #include "modeling_meshes.h"
 #include "test_helpers.h"
@@ -36,73 +37,16 @@ using namespace dlfl;
 namespace {
 
 using Points = std::vector<glm::dvec3>;
-using Key = std::tuple<double, double, double>;
-
-Key key(const glm::dvec3& p) { return {p.x, p.y, p.z}; }
+using test::brute_force_planes;
+using test::brute_force_vertices;
+using test::Key;
+using test::key;
+using test::Plane;
 
 double diagonal(const Points& points) {
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
   for (const glm::dvec3& p : points) lo = glm::min(lo, p), hi = glm::max(hi, p);
   return glm::length(hi - lo);
-}
-
-// ---- the brute-force hull --------------------------------------------------------------------------------
-
-struct Plane {
-  glm::dvec3 normal;  // unit, outward
-  double offset;      // the plane is normal . x = offset
-};
-
-// Every plane through three of the points (not on one line) with all the points on one side, up to `tol`
-// (absolute), oriented so that they are below it; each plane once. For points with small integer
-// coordinates the sums below are exact and tol is 0.
-std::vector<Plane> brute_force_planes(const Points& p, double tol) {
-  std::vector<Plane> planes;
-  const std::size_t n = p.size();
-  for (std::size_t i = 0; i < n; ++i) {
-    for (std::size_t j = i + 1; j < n; ++j) {
-      for (std::size_t k = j + 1; k < n; ++k) {
-        glm::dvec3 normal = glm::cross(p[j] - p[i], p[k] - p[i]);
-        if (glm::length(normal) <= 1e-12) continue;
-        bool above = false, below = false;
-        for (const glm::dvec3& q : p) {
-          const double s = glm::dot(normal, q - p[i]) / glm::length(normal);
-          above = above || s > tol;
-          below = below || s < -tol;
-        }
-        if (above == below) continue;  // points on both sides (or, never here, on the plane only)
-        normal = glm::normalize(above ? -normal : normal);
-        const Plane plane{normal, glm::dot(normal, p[i])};
-        const bool known = std::any_of(planes.begin(), planes.end(), [&](const Plane& q) {
-          return glm::length(q.normal - plane.normal) < 1e-9 && std::abs(q.offset - plane.offset) < 1e-9;
-        });
-        if (!known) planes.push_back(plane);
-      }
-    }
-  }
-  return planes;
-}
-
-// The points that are corners of the brute-force hull: on three of its planes whose normals are independent
-// (a point inside a face is on one plane, a point inside an edge on two).
-std::set<Key> brute_force_vertices(const Points& p, const std::vector<Plane>& planes, double tol) {
-  std::set<Key> out;
-  for (const glm::dvec3& q : p) {
-    std::vector<glm::dvec3> on;
-    for (const Plane& plane : planes) {
-      if (std::abs(glm::dot(plane.normal, q) - plane.offset) <= tol) on.push_back(plane.normal);
-    }
-    bool corner = false;
-    for (std::size_t a = 0; a < on.size() && !corner; ++a) {
-      for (std::size_t b = a + 1; b < on.size() && !corner; ++b) {
-        for (std::size_t c = b + 1; c < on.size() && !corner; ++c) {
-          corner = std::abs(glm::dot(on[a], glm::cross(on[b], on[c]))) > 1e-9;
-        }
-      }
-    }
-    if (corner) out.insert(key(q));
-  }
-  return out;
 }
 
 // The hull agrees with the brute force: the same face planes, one face per plane, the same corners.

@@ -75,6 +75,14 @@ class Session {
     return out;
   }
 
+  // A list of 1 to 6 handles drawn as `handle` draws one (so sometimes with a removed one or a repeat).
+  template <class H>
+  std::vector<H> handles(const Mesh& m) {
+    std::vector<H> out(1 + pick(6));
+    for (H& h : out) h = handle<H>(m);
+    return out;
+  }
+
   Value value_for(const ParamSpec& p, const Mesh& m) {
     switch (p.type) {
       case ParamType::boolean:
@@ -109,9 +117,13 @@ class Session {
       case ParamType::mesh:
         return std::make_shared<const Mesh>(cube());
       case ParamType::vertices:
+        return handles<VertexId>(m);
       case ParamType::edges:
+        return handles<EdgeId>(m);
       case ParamType::faces:
+        return handles<FaceId>(m);
       case ParamType::corners:
+        return handles<CornerId>(m);
       case ParamType::params:
         break;
     }

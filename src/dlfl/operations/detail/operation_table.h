@@ -63,6 +63,7 @@ std::vector<OperationSpec> spheralize_operation_specs();         // spheralize.c
 // Hulls (docs/modeling.md)
 std::vector<OperationSpec> convex_hull_operation_specs();  // convex_hull.cpp
 std::vector<OperationSpec> dual_hull_operation_specs();    // dual_hull.cpp
+std::vector<OperationSpec> multi_connect_operation_specs();  // multi_connect.cpp
 
 // One entry per line, grouped as the declarations above (kept out of clang-format so that adding one
 // entry touches one line).
@@ -120,6 +121,7 @@ inline constexpr std::array operation_files = {
     // Hulls
     &convex_hull_operation_specs,
     &dual_hull_operation_specs,
+    &multi_connect_operation_specs,
 };
 // clang-format on
 
