@@ -67,8 +67,7 @@ ConnectEdgesResult connect_edges(Transaction& tx, CornerId corner1, CornerId cor
 std::vector<OperationSpec> detail::connect_edges_operation_specs() {
   return {edit_operation(
       "connect_edges",
-      "bridges the edges leaving two corners of two faces with a new quad (two INSERTEDGEs): adds a handle "
-      "on one component, joins two components",
+      "bridges the edges of two corners in two faces by a quad (two INSERTEDGEs): a handle, or a join",
       {param("corner1", ParamType::corner, "the corner whose edge (a to b) is one side of the bridge"),
        param("corner2", ParamType::corner,
              "the corner, in another face, whose edge (c to d) is the other side; the quad is c, d, a, b")},

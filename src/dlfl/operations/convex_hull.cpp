@@ -35,8 +35,7 @@ Mesh convex_hull(const Mesh& mesh) {
 std::vector<OperationSpec> detail::convex_hull_operation_specs() {
   return {hull_operation(
       "convex_hull",
-      "replaces the mesh with the convex hull of its vertices: planar, strictly convex faces (coplanar "
-      "points merged), closed, genus 0",
+      "replaces the mesh with the convex hull of its vertices: planar, strictly convex faces, genus 0",
       [](const Mesh& current) { return convex_hull(current); })};
 }
 

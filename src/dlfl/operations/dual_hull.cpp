@@ -55,9 +55,7 @@ Mesh dual_hull(const Mesh& mesh) {
 
 std::vector<OperationSpec> detail::dual_hull_operation_specs() {
   return {hull_operation(
-      "dual_hull",
-      "replaces the mesh with the polar dual of the convex hull of its vertices about their centroid: a "
-      "vertex per hull face, a face per hull vertex",
+      "dual_hull", "replaces the mesh with the polar dual of its vertices' convex hull about their centroid",
       [](const Mesh& current) { return dual_hull(current); })};
 }
 

@@ -151,13 +151,10 @@ std::vector<VertexId> menger(Transaction& tx, const MengerOptions& options) {
 
 void check_menger(const Mesh& mesh, const MengerOptions& options) { planned(mesh, options); }
 
-namespace detail {
-
-std::vector<OperationSpec> menger_operation_specs() {
+std::vector<OperationSpec> detail::menger_operation_specs() {
   return {edit_operation(
       "menger",
-      "a Menger-sponge cut of every face: a frame of cells, and a tunnel from its centre to a "
-      "skeleton inside (genus E - V + 1)",
+      "a Menger-sponge cut of every face: a frame of cells, a tunnel from each to a skeleton inside",
       {param("scale", ParamType::number, 1.0 / 3.0, "the centre face's size, as a share of its face's")
            .in_open(0.0, 1.0),
        param("depth", ParamType::number, 1.0 / 3.0,
@@ -171,6 +168,4 @@ std::vector<OperationSpec> menger_operation_specs() {
         planned(mesh, {p.number("scale"), p.number("depth")});
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

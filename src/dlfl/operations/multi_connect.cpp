@@ -168,8 +168,7 @@ void check_multi_connect(const Mesh& mesh, std::span<const FaceId> faces,
 std::vector<OperationSpec> detail::multi_connect_operation_specs() {
   return {edit_operation(
       "multi_connect",
-      "joins the faces through one hub, the convex hull of their vertices scaled toward their centroid "
-      "(TopMod's multi-face handle): k faces on one component add k - 1 handles",
+      "joins k faces through one hub, their scaled convex hull (TopMod's multi-face handle): k - 1 handles",
       {param("faces", ParamType::faces, "the faces to join (at least 3)"),
        param("method", ParamType::text, "hull", "how the hub is made: hull (the only method)")
            .one_of({"hull"}),

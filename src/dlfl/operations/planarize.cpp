@@ -77,8 +77,7 @@ PlanarizeResult planarize(Transaction& tx, const PlanarizeOptions& options) {
 std::vector<OperationSpec> detail::planarize_operation_specs() {
   return {edit_operation(
       "planarize",
-      "moves vertices so that faces approach their least-squares planes; reports the largest non-planarity "
-      "before and after",
+      "moves vertices towards their faces' least-squares planes; reports the non-planarity before and after",
       {param("iterations", ParamType::integer, 10, "rounds of moves (0: measure only)").in(0, 10000)},
       "V+0, E+0, F+0",
       [](Transaction& tx, const Params& p) {

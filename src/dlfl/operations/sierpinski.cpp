@@ -129,9 +129,7 @@ void sierpinski(Transaction& tx, const SierpinskiOptions& options) {
 
 void check_sierpinski(const Mesh& mesh, const SierpinskiOptions& options) { planned(mesh, options); }
 
-namespace detail {
-
-std::vector<OperationSpec> sierpinski_operation_specs() {
+std::vector<OperationSpec> detail::sierpinski_operation_specs() {
   return {edit_operation(
       "sierpinski",
       "TopMod's multi-connect midpoints: a corner piece at every vertex, a strut along every edge "
@@ -150,6 +148,4 @@ std::vector<OperationSpec> sierpinski_operation_specs() {
         planned(mesh, {p.number("scale"), p.number("neck")});
       })};
 }
-
-}  // namespace detail
 }  // namespace dlfl

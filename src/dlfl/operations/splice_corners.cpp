@@ -150,8 +150,7 @@ VertexId splice_corners(Transaction& tx, CornerId c1, CornerId c2, const SpliceC
 std::vector<OperationSpec> detail::splice_corners_operation_specs() {
   return {edit_operation(
       "splice_corners",
-      "merges the vertices of two corners into one (vertex(corner1) stays): an edge between the corners, "
-      "then its collapse",
+      "merges the vertices of two corners into one (vertex(corner1) stays): an edge drawn, then collapsed",
       {param("corner1", ParamType::corner, "the corner whose vertex stays"),
        param("corner2", ParamType::corner, "the corner whose vertex is merged into it"),
        param("position", ParamType::point, "where the merged vertex goes")

@@ -67,8 +67,7 @@ SubdivideFaceResult subdivide_face(Transaction& tx, FaceId f, const SubdivideFac
 std::vector<OperationSpec> detail::subdivide_face_operation_specs() {
   return {edit_operation(
       "subdivide_face",
-      "a new vertex at the face's centroid joined to new edge midpoints (n quads) or to the corners (n "
-      "triangles)",
+      "a vertex at the centroid joined to new edge midpoints (n quads) or to the corners (n triangles)",
       {param("face", ParamType::face, "the face to subdivide"),
        param("style", ParamType::text, "quads", "quads: through edge midpoints; triangles: stellate_face")
            .one_of({"quads", "triangles"})},
