@@ -57,7 +57,7 @@ HubPoints hub_points(const Mesh& m, std::span<const FaceId> faces) {
   return out;
 }
 
-// The corner of `hull` at vertex `start` whose face runs through `cycle` (forward, or backward from its
+// The corner of `hull` at the vertex cycle[0] whose face runs through `cycle` (forward, or backward from its
 // first element); invalid if there is none.
 CornerId find_copy(const Mesh& hull, const std::vector<std::uint32_t>& cycle, bool backward) {
   const std::size_t n = cycle.size();
