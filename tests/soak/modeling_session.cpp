@@ -67,19 +67,27 @@ class Session {
     return H(pick(capacity + 2));
   }
 
-  // handle() of the one of the handle types H whose kind `type` names (ParamType::face: a FaceId).
-  template <class... H>
-  Value handle_of(ParamType type, const Mesh& m) {
-    Value out;
-    ((to_string(type) == to_string(element_kind_v<H>) ? void(out = handle<H>(m)) : void()), ...);
-    return out;
-  }
-
   // A list of 1 to 6 handles drawn as `handle` draws one (so sometimes with a removed one or a repeat).
   template <class H>
   std::vector<H> handles(const Mesh& m) {
     std::vector<H> out(1 + pick(6));
     for (H& h : out) h = handle<H>(m);
+    return out;
+  }
+
+  // For a handle parameter: a handle of the kind `type` names (ParamType::face: a FaceId), or a list of them
+  // for a list type (ParamType::faces). Empty for the other types.
+  Value handle_value(ParamType type, const Mesh& m) {
+    Value out;
+    const auto draw = [&](auto kind, ParamType one, ParamType list) {
+      using H = decltype(kind);
+      if (type == one) out = handle<H>(m);
+      if (type == list) out = handles<H>(m);
+    };
+    draw(VertexId(), ParamType::vertex, ParamType::vertices);
+    draw(EdgeId(), ParamType::edge, ParamType::edges);
+    draw(FaceId(), ParamType::face, ParamType::faces);
+    draw(CornerId(), ParamType::corner, ParamType::corners);
     return out;
   }
 
@@ -106,7 +114,11 @@ class Session {
       case ParamType::edge:
       case ParamType::face:
       case ParamType::corner:
-        return handle_of<VertexId, EdgeId, FaceId, CornerId>(p.type, m);
+      case ParamType::vertices:
+      case ParamType::edges:
+      case ParamType::faces:
+      case ParamType::corners:
+        return handle_value(p.type, m);
       case ParamType::numbers:
         return chance(0.5) ? std::vector<double>{unit()} : std::vector<double>{unit(), unit(), unit()};
       case ParamType::points: {
@@ -116,14 +128,6 @@ class Session {
       }
       case ParamType::mesh:
         return std::make_shared<const Mesh>(cube());
-      case ParamType::vertices:
-        return handles<VertexId>(m);
-      case ParamType::edges:
-        return handles<EdgeId>(m);
-      case ParamType::faces:
-        return handles<FaceId>(m);
-      case ParamType::corners:
-        return handles<CornerId>(m);
       case ParamType::params:
         break;
     }
