@@ -61,8 +61,8 @@ std::vector<OperationSpec> smooth_operation_specs();             // smooth.cpp
 std::vector<OperationSpec> spheralize_operation_specs();         // spheralize.cpp
 
 // Hulls (docs/modeling.md)
-std::vector<OperationSpec> convex_hull_operation_specs();  // convex_hull.cpp
-std::vector<OperationSpec> dual_hull_operation_specs();    // dual_hull.cpp
+std::vector<OperationSpec> convex_hull_operation_specs();    // convex_hull.cpp
+std::vector<OperationSpec> dual_hull_operation_specs();      // dual_hull.cpp
 std::vector<OperationSpec> multi_connect_operation_specs();  // multi_connect.cpp
 
 // One entry per line, grouped as the declarations above (kept out of clang-format so that adding one
