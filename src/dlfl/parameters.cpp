@@ -209,6 +209,11 @@ ParamSpec& ParamSpec::optional(std::string how_chosen) {
   return *this;
 }
 
+ParamSpec& ParamSpec::before_version3(Value meaning) {
+  in_old_logs = std::move(meaning);
+  return *this;
+}
+
 ParamSpec& ParamSpec::one_of(std::vector<std::string> words) {
   keywords = std::move(words);
   return *this;

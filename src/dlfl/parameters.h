@@ -188,6 +188,9 @@ struct ParamSpec {
   /// For text: the allowed values, when not empty. For other types: words accepted in place of a value (the
   /// keyword "centroid" for a point), kept as text.
   std::vector<std::string> keywords;
+  /// What a log written before this parameter existed (oplog version 1 or 2, which lacks the field) means:
+  /// filled in when such a log is replayed. Empty: the default, as for any parameter left out.
+  Value in_old_logs;
 
   ParamSpec& in(double lo, double hi) { return range(lo, hi, false, false); }
   ParamSpec& in_open(double lo, double hi) { return range(lo, hi, true, true); }
@@ -195,6 +198,8 @@ struct ParamSpec {
   ParamSpec& at_least(double lo) { return range(lo, max, false, max_open); }
   ParamSpec& optional(std::string how_chosen = {});
   ParamSpec& one_of(std::vector<std::string> words);
+  /// Sets `in_old_logs`.
+  ParamSpec& before_version3(Value meaning);
   /// True for the types whose values are handles (one or a list).
   bool is_handle() const;
   /// The range as text, "[0, 1]", "(0, 1)", "[1, inf)"; empty if unbounded.

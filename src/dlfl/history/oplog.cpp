@@ -7,6 +7,7 @@
 #include <dlfl/io/json_mesh.h>
 #include <dlfl/mesh_hash.h>
 #include <dlfl/operations/operation.h>
+#include <dlfl/schemes/scheme_registry.h>
 
 namespace dlfl {
 namespace {
@@ -109,8 +110,31 @@ class FieldReader {
   std::size_t op_;
 };
 
+// A log of version 1 or 2 predates some parameters: each one it lacks means what the library did then.
+void fill_in_old_meanings(std::span<const ParamSpec> specs, Params& given) {
+  for (const ParamSpec& spec : specs) {
+    if (!spec.in_old_logs.empty() && !given.has(spec.name)) given[spec.name] = spec.in_old_logs;
+  }
+}
+
+void fill_in_old_meanings(const std::string& op_name, Params& given) {
+  if (op_name != "subdivide" || !given.has("scheme") || !given.has("params")) return;
+  const Value& scheme = given.at("scheme");
+  if (scheme.kind() != Value::Kind::text) return;
+  if (given.at("params").kind() != Value::Kind::params) return;  // refused when it runs
+  const SchemeSpec* spec = nullptr;
+  try {
+    spec = &find_scheme(scheme.as_text());
+  } catch (const UnknownNameError&) {
+    return;  // refused when it runs, with the known names
+  }
+  Params params = given.at("params").as_params();
+  fill_in_old_meanings(spec->params, params);
+  given["params"] = std::move(params);
+}
+
 void replay_op(Editor& editor, const json& op, std::size_t index, const std::string& name,
-               const ReplayOptions& options) {
+               const ReplayOptions& options, int version) {
   const FieldReader reader(name, index);
   if (!op.is_object()) reader.fail("op", "expected an object");
   auto kind = op.find("op");
@@ -134,6 +158,10 @@ void replay_op(Editor& editor, const json& op, std::size_t index, const std::str
     }
     if (value.is_null() && declared->is_optional) continue;  // null: not given (set_face_point clears)
     given[field] = reader.typed(value, *declared);
+  }
+  if (version < 3) {
+    fill_in_old_meanings(spec->params, given);
+    fill_in_old_meanings(op_name, given);
   }
   try {
     editor.apply(op_name, given);
@@ -205,9 +233,9 @@ Editor replay_log(std::string_view text, const std::string& name, const ReplayOp
   if (version == log.end() || !version->is_number_integer()) {
     throw LogError(name, LogError::npos, "version", "missing or not an integer");
   }
-  if (*version != 1 && *version != oplog_version) {
+  if (*version < 1 || *version > oplog_version) {
     throw LogError(name, LogError::npos, "version",
-                   "unsupported version " + version->dump() + " (this library reads versions 1 and " +
+                   "unsupported version " + version->dump() + " (this library reads versions 1 to " +
                        std::to_string(oplog_version) + ")");
   }
   Editor::Options options;
@@ -226,7 +254,8 @@ Editor replay_log(std::string_view text, const std::string& name, const ReplayOp
     throw LogError(name, LogError::npos, "final_hash", "expected a string");
   }
   Editor editor(options);
-  for (std::size_t i = 0; i < ops->size(); ++i) replay_op(editor, (*ops)[i], i, name, replay);
+  for (std::size_t i = 0; i < ops->size(); ++i)
+    replay_op(editor, (*ops)[i], i, name, replay, version->get<int>());
   if (replay.verify && final_hash != log.end() && *final_hash != mesh_hash(editor.mesh())) {
     throw LogError(name, LogError::npos, "final_hash",
                    "the replay ends in a mesh of hash " + mesh_hash(editor.mesh()) + ", the log expects " +

@@ -15,8 +15,10 @@ namespace dlfl {
 
 class FileBatch;
 
-/// The log version this library writes. Version 1 logs (written before the operation registry) still replay.
-inline constexpr int oplog_version = 2;
+/// The log version this library writes. Version 1 logs (written before the operation registry) and version 2
+/// logs (written before the schemes' boundary rules) still replay: a parameter that did not exist then means
+/// what it did before (`ParamSpec::in_old_logs`; a scheme's `boundary` is `hole`).
+inline constexpr int oplog_version = 3;
 
 /// A log that cannot be replayed. `op()` is the index of the offending op (or npos for the document itself)
 /// and `field()` the field at fault ("corner1", "params.t"); the message names both.
