@@ -90,7 +90,8 @@ double box_diagonal(std::span<const glm::dvec3> points) {
 // Z-order curve.
 std::uint32_t cell_code(const glm::dvec3& p, const glm::dvec3& lo, const glm::dvec3& scale) {
   auto spread = [](double x) {
-    std::uint32_t v = static_cast<std::uint32_t>(std::clamp(x, 0.0, 1023.0));
+    // Written so that a NaN falls into cell 0 too: converting it to an integer is undefined.
+    std::uint32_t v = x > 0.0 ? static_cast<std::uint32_t>(std::min(x, 1023.0)) : 0u;
     v = (v | v << 16) & 0x030000FFu;
     v = (v | v << 8) & 0x0300F00Fu;
     v = (v | v << 4) & 0x030C30C3u;
@@ -104,7 +105,13 @@ std::uint32_t cell_code(const glm::dvec3& p, const glm::dvec3& lo, const glm::dv
 Array<std::uint32_t> curve_order(const Array<glm::dvec3>& q) {
   glm::dvec3 lo = q[0], hi = q[0];
   for (const glm::dvec3& p : q) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  const glm::dvec3 scale = 1023.0 / glm::max(hi - lo, glm::dvec3(std::numeric_limits<double>::min()));
+  // An axis without extent (every point on one plane) puts every point into its cell 0; so does one so thin
+  // that 1023 over its extent is not finite, where a scale of infinity would make 0 * inf = NaN.
+  glm::dvec3 scale(0.0);
+  for (int k = 0; k < 3; ++k) {
+    const double s = 1023.0 / (hi[k] - lo[k]);
+    scale[k] = std::isfinite(s) ? s : 0.0;
+  }
   Array<std::uint32_t> code(q.size()), order(q.size()), sorted(q.size());
   for (std::uint32_t i = 0; i < q.size(); ++i) code[i] = cell_code(q[i], lo, scale), order[i] = i;
   Array<std::uint32_t> count(std::size_t(1) << 15);
