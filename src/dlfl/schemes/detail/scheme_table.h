@@ -29,6 +29,7 @@ inline SchemeSpec parameterless_scheme(Mesh (*step)(const Mesh&, Origins*), std:
 inline SchemeSpec boundary_scheme(Mesh (*step)(const Mesh&, Origins*, const BoundaryOptions&),
                                   std::string name, std::string doc,
                                   MeshCounts (*counts)(const MeshCounts&)) {
+  // Name, doc and counts as a scheme without parameters; then the parameters and a step that reads them.
   SchemeSpec spec = parameterless_scheme(nullptr, std::move(name), std::move(doc), counts);
   spec.params = boundary_param_specs();
   spec.apply = [step](const Mesh& mesh, const Params& params, Origins* origins) {
