@@ -69,6 +69,29 @@ glm::dvec3 edge_point(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3
 // The third vertex of the triangle of side corner s (at the corner before it).
 const glm::dvec3& third(const Mesh& m, CornerId s) { return m.position(m.vertex(m.prev(s))); }
 
+// One pass over the edges: the edge points (under the curve rule, `open`, a boundary edge's at its midpoint),
+// the neighbour sums and valences of the vertex rule, and `per_edge(e, s0, s1)` for whatever else a step
+// builds per edge.
+template <bool open, class PerEdge>
+void edge_pass(const Mesh& m, std::uint32_t edge_base, MeshAssembler& out, std::span<glm::dvec3> sum,
+               std::span<std::uint32_t> valence, const PerEdge& per_edge) {
+  const auto ne = static_cast<std::uint32_t>(m.num_edges());
+  for (std::uint32_t e = 0; e < ne; ++e) {
+    const CornerId s0 = m.corner(EdgeId(e), 0), s1 = m.corner(EdgeId(e), 1);
+    const std::uint32_t a = m.vertex(s0).index(), b = m.vertex(s1).index();
+    const glm::dvec3& pa = m.position(VertexId(a));
+    const glm::dvec3& pb = m.position(VertexId(b));
+    const bool boundary_edge = open && (m.is_hole(m.face(s0)) || m.is_hole(m.face(s1)));
+    out.set_position(edge_base + e,
+                     boundary_edge ? 0.5 * (pa + pb) : edge_point(pa, pb, third(m, s0), third(m, s1)));
+    sum[a] += pb;
+    sum[b] += pa;
+    ++valence[a];
+    ++valence[b];
+    per_edge(e, s0, s1);
+  }
+}
+
 // The vertex points 0 .. V-1 from the sums of each vertex's neighbours and its valence.
 void set_vertex_points(const Mesh& m, std::span<const glm::dvec3> sum, std::span<const std::uint32_t> valence,
                        MeshAssembler& out) {
@@ -126,19 +149,7 @@ Mesh loop_open(const Mesh& input, const Mesh& m, const BoundaryOptions& boundary
   // Edge points (a boundary edge's is its midpoint) and the neighbour sums of the interior vertex rule.
   std::vector<glm::dvec3> sum(nv, glm::dvec3(0.0));
   std::vector<std::uint32_t> valence(nv, 0);
-  for (std::uint32_t e = 0; e < ne; ++e) {
-    const CornerId s0 = m.corner(EdgeId(e), 0), s1 = m.corner(EdgeId(e), 1);
-    const std::uint32_t a = m.vertex(s0).index(), b = m.vertex(s1).index();
-    const glm::dvec3& pa = m.position(VertexId(a));
-    const glm::dvec3& pb = m.position(VertexId(b));
-    const bool boundary_edge = m.is_hole(m.face(s0)) || m.is_hole(m.face(s1));
-    out.set_position(edge_base + e,
-                     boundary_edge ? 0.5 * (pa + pb) : edge_point(pa, pb, third(m, s0), third(m, s1)));
-    sum[a] += pb;
-    sum[b] += pa;
-    ++valence[a];
-    ++valence[b];
-  }
+  edge_pass<true>(m, edge_base, out, sum, valence, [](std::uint32_t, CornerId, CornerId) {});
   set_vertex_points(m, sum, valence, out);
   open.set_binary_vertex_points(m, out);
   Mesh result = out.finish();
@@ -190,22 +201,13 @@ Mesh loop(const Mesh& input, Origins* origins, const BoundaryOptions& boundary) 
   // Edges: edge points, the outer corners, and the neighbour sums of the vertex rule.
   std::vector<glm::dvec3> sum(nv, glm::dvec3(0.0));
   std::vector<std::uint32_t> valence(nv, 0);
-  for (std::uint32_t e = 0; e < ne; ++e) {
-    const CornerId s0 = m.corner(EdgeId(e), 0), s1 = m.corner(EdgeId(e), 1);
-    const std::uint32_t a = m.vertex(s0).index(), b = m.vertex(s1).index();
-    const glm::dvec3& pa = m.position(VertexId(a));
-    const glm::dvec3& pb = m.position(VertexId(b));
-    out.set_position(edge_base + e, edge_point(pa, pb, third(m, s0), third(m, s1)));
-    sum[a] += pb;
-    sum[b] += pa;
-    ++valence[a];
-    ++valence[b];
+  edge_pass<false>(m, edge_base, out, sum, valence, [&](std::uint32_t e, CornerId s0, CornerId s1) {
     const std::uint32_t n0 = m.next(s0).index(), n1 = m.next(s1).index();
-    out.set_corner(3 * s0.index() + 0, a, 3 * n1 + 2);
+    out.set_corner(3 * s0.index() + 0, m.vertex(s0).index(), 3 * n1 + 2);
     out.set_corner(3 * n1 + 2, edge_base + e, 3 * s0.index() + 0);
-    out.set_corner(3 * s1.index() + 0, b, 3 * n0 + 2);
+    out.set_corner(3 * s1.index() + 0, m.vertex(s1).index(), 3 * n0 + 2);
     out.set_corner(3 * n0 + 2, edge_base + e, 3 * s1.index() + 0);
-  }
+  });
   set_vertex_points(m, sum, valence, out);
   Mesh result = out.finish();
   if (curve) detail::carry_sharp_marks(marks, result, nv);
