@@ -218,6 +218,28 @@ TEST_CASE("boundary curve, catmull-clark and loop: counts, validity and genus wi
   }
 }
 
+TEST_CASE("boundary curve, catmull-clark and loop: edges with holes on both sides") {
+  // The grid's face at corner 3 made a hole too: its two outer edges have holes on both sides, and corner 3,
+  // on two hole corners, stays. Both holes stay whole, with the closed-form counts.
+  for (const BinaryScheme& s : binary_schemes()) {
+    CAPTURE(s.name);
+    Mesh m = build_mesh(input_for(s, grid_with_holes(3, 3, {})));
+    for (CornerId c : m.corners(VertexId(3))) {
+      if (!m.is_hole(m.face(c))) {
+        m.set_hole(m.face(c), true);
+        break;
+      }
+    }
+    for (int steps = 1; steps <= 2; ++steps) {
+      const Mesh out = s.step(m, {BoundaryRule::curve, false});
+      CHECK(open_counts(out) == s.counts(open_counts(m)));
+      check_same_topology(m, out);
+      CHECK(out.position(VertexId(3)) == glm::dvec3(3, 0, 0));
+      m = out;
+    }
+  }
+}
+
 TEST_CASE("boundary curve, catmull-clark and loop: the registry passes boundary and sharp_corners") {
   for (const BinaryScheme& s : binary_schemes()) {
     CAPTURE(s.name);
