@@ -100,9 +100,9 @@ TEST_CASE("catmull-clark: point spheres are refused and tombstones do not matter
   CHECK(a == b);
 }
 
-TEST_CASE("catmull-clark: hole faces are subdivided and their quads stay holes") {
+TEST_CASE("catmull-clark: with boundary=hole, hole faces are subdivided and their quads stay holes") {
   const Mesh in = build_mesh(test::grid_soup(3, 2));  // 6 quads and one hole of 10 corners
-  const Mesh out = catmull_clark(in);
+  const Mesh out = catmull_clark(in, nullptr, {BoundaryRule::hole});
   require_valid(out);
   std::size_t holes = 0;
   for (FaceId f : out.faces()) holes += out.is_hole(f);

@@ -21,7 +21,8 @@ namespace {
 // F' = 4F triangles; old vertices keep their valence, edge points have 6.
 void check_counts(const Mesh& in, bool solid = true) {
   const std::size_t E = in.num_edges(), F = in.num_faces();
-  check_triangle_step(in, loop, {E, 2 * E + 3 * F, 4 * F}, solid);
+  check_triangle_step(
+      in, [](const Mesh& m, Origins* o) { return loop(m, o); }, {E, 2 * E + 3 * F, 4 * F}, solid);
 }
 
 }  // namespace
@@ -94,14 +95,15 @@ TEST_CASE("loop: affine invariance") {
   check_affine_invariance(build_mesh(triangulated(torus_soup(6, 4))), [](const Mesh& m) { return loop(m); });
 }
 
-TEST_CASE("loop: a triangular hole is subdivided as if capped and its four triangles stay holes") {
+TEST_CASE(
+    "loop: with boundary=hole, a triangular hole is subdivided as if capped, its four triangles holes") {
   // The tetrahedron without its last face: an open mesh whose boundary loop is a triangular hole.
   PolygonSoup open = tetrahedron_soup();
   open.offsets.pop_back();
   open.indices.resize(9);
   const Mesh in = build_mesh(open);
   REQUIRE(count_holes(in) == 1);
-  const Mesh out = loop(in);
+  const Mesh out = loop(in, nullptr, {BoundaryRule::hole});
   check_valid_same_genus(in, out);
   CHECK(out.num_faces() == 16);
   CHECK(count_holes(out) == 4);
@@ -115,7 +117,8 @@ TEST_CASE("loop: a triangular hole is subdivided as if capped and its four trian
   }
 }
 
-TEST_CASE("loop: non-triangles, larger holes and point spheres are refused, naming the input's element") {
+TEST_CASE(
+    "loop: non-triangles, point spheres and (with boundary=hole) larger holes are refused, naming them") {
   // The octahedron with the edge between faces 0 and 1 removed (one of them is now a tombstone) and the
   // quad split again along its other diagonal (a new face at the end), then the edge between faces 4 and 5
   // removed: the only non-triangle comes after a tombstone, so its handle is not its compacted index.
@@ -139,12 +142,12 @@ TEST_CASE("loop: non-triangles, larger holes and point spheres are refused, nami
   const std::string message = error_message<TopologyError>([&] { loop(m); });
   CHECK(message == "loop: " + to_string(quad) + " has 4 corners; Loop subdivision needs triangles");
 
-  // A hole of more than three corners: a triangulated grid's boundary loop.
+  // With boundary=hole, a hole of more than three corners: a triangulated grid's boundary loop. (The curve
+  // rule takes it: tests/test_boundary_loop.cpp.)
   const Mesh grid = build_mesh(triangulated(grid_soup(2, 2)));
-  const std::string hole = error_message<TopologyError>([&] { loop(grid); });
-  CHECK(hole.find(
-            "is a hole (a boundary loop) with 8 corners; Loop subdivision needs triangles, holes included") !=
-        std::string::npos);
+  const std::string hole = error_message<TopologyError>([&] { loop(grid, nullptr, {BoundaryRule::hole}); });
+  CHECK(hole.find("is a hole (a boundary loop) with 8 corners; Loop subdivision with boundary=hole needs "
+                  "triangles, holes included (boundary=curve takes holes of any size)") != std::string::npos);
 
   Mesh sphere = test::tetrahedron();
   sphere.create_vertex({3, 3, 3});

@@ -30,6 +30,7 @@
 #include <dlfl/schemes/scheme_registry.h>
 #include <dlfl/schemes/sqrt3.h>
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
+#include "open_meshes.h"
 #include "triangle_meshes.h"
 
 using namespace dlfl;
@@ -166,17 +167,20 @@ glm::dvec3 face_normal(const Mesh& m, FaceId f) {
   return glm::normalize(n);
 }
 
-// The soup as a mesh whose first vertex, first edge and some faces and corners are tombstones, so that its
-// live handles differ from their compacted indices: an extra first vertex (a point sphere) deleted, and edge
-// 0 deleted and inserted again between the same corners of the merged face. Same surface as the soup.
+// The soup as a mesh whose first vertex, an edge and some faces and corners are tombstones, so that its live
+// handles differ from their compacted indices: an extra first vertex (a point sphere) deleted, and the first
+// edge between two surface faces deleted and inserted again between the same corners of the merged face.
+// Same surface as the soup.
 Mesh with_tombstones(const PolygonSoup& soup) {
   PolygonSoup shifted = soup;
   shifted.positions.insert(shifted.positions.begin(), glm::dvec3(100, 100, 100));
   for (auto& i : shifted.indices) ++i;
   Mesh m = build_mesh(shifted);
   m.delete_vertex(VertexId(0));
-  const VertexId a = m.from(EdgeId(0)), b = m.to(EdgeId(0));
-  m.delete_edge(EdgeId(0));
+  EdgeId inner(0);  // the first edge between two surface faces (edge 0 on a closed mesh)
+  while (m.is_hole(m.face(inner, 0)) || m.is_hole(m.face(inner, 1))) inner = EdgeId(inner.index() + 1);
+  const VertexId a = m.from(inner), b = m.to(inner);
+  m.delete_edge(inner);
   for (CornerId ca : m.corners(a)) {
     for (CornerId cb : m.corners(b)) {
       if (m.face(ca) == m.face(cb)) {
@@ -214,8 +218,10 @@ void check_tombstones_renamed(const PolygonSoup& soup, const Scheme& scheme) {
   const Mesh::CompactMap map = dense.compact();
   // The renaming is not the identity for any kind, so a scheme that named compacted handles would fail.
   REQUIRE(map.vertices[1] == VertexId(0));
-  REQUIRE(map.edges[1] == EdgeId(0));
-  std::uint32_t moved_faces = 0, moved_corners = 0;
+  std::uint32_t moved_edges = 0, moved_faces = 0, moved_corners = 0;
+  for (std::uint32_t e = 0; e < map.edges.size(); ++e)
+    moved_edges += map.edges[e].valid() && map.edges[e] != EdgeId(e);
+  REQUIRE(moved_edges > 0);
   for (std::uint32_t f = 0; f < map.faces.size(); ++f)
     moved_faces += map.faces[f].valid() && map.faces[f] != FaceId(f);
   for (std::uint32_t c = 0; c < map.corners.size(); ++c) {
@@ -298,9 +304,11 @@ Sizes sizes(const Mesh& m) { return {m.num_vertices(), m.num_edges(), m.num_face
 // ---- per-scheme rules
 // ---------------------------------------------------------------------------------------
 
+// The rule that splits hole faces too (boundary=hole); check_open_catmull_clark has the curve rule's.
 void check_catmull_clark(const Mesh& in) {
   Origins o;
-  const Mesh out = checked_step(in, catmull_clark, o);
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return catmull_clark(m, origins, {BoundaryRule::hole}); }, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, E, F, 0}, {0, 2 * E, 0, C}, {0, 0, 0, C});
   // Positions: face points at centroids, edge points (a + b + F0 + F1) / 4, vertex points (Q + 2R + (n-3)S) /
@@ -478,7 +486,8 @@ void check_honeycomb(const Mesh& in) {
 
 void check_loop(const Mesh& in) {
   Origins o;
-  const Mesh out = checked_step(in, loop, o);
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return loop(m, origins); }, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, E, 0, 0}, {0, 2 * E, 0, C}, {0, 0, F, C});
   for (VertexId w : out.vertices()) {
@@ -513,7 +522,8 @@ void check_loop(const Mesh& in) {
 
 void check_sqrt3(const Mesh& in) {
   Origins o;
-  const Mesh out = checked_step(in, sqrt3, o);
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return sqrt3(m, origins); }, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, 0, F, 0}, {0, E, 0, C}, {0, 0, 0, C});
   for (VertexId w : out.vertices()) {
@@ -542,6 +552,155 @@ void check_sqrt3(const Mesh& in) {
     } else {
       const CornerId c = src.corner();
       CHECK(same_set(ends, {origin_of(in.vertex(c)), origin_of(in.face(c))}));
+    }
+  }
+}
+
+// ---- the curve boundary rule on open meshes: hole faces stay whole and stem from themselves; the rest as on
+// closed meshes, without the points and polygons of hole faces.
+
+struct OpenSizes {
+  std::size_t V, E, F, C, H, B;  // F and C of surface faces; H hole faces with B corners in all
+};
+OpenSizes open_sizes(const Mesh& m) {
+  OpenSizes s{m.num_vertices(), m.num_edges(), m.num_surface_faces(), 0, m.num_hole_faces(), 0};
+  for (FaceId f : m.faces()) (m.is_hole(f) ? s.B : s.C) += m.size(f);
+  return s;
+}
+
+// A hole face of a binary split stems from the input's hole, its vertices alternately from that hole's
+// vertices and edges, in its order.
+void check_binary_hole(const Mesh& in, const Mesh& out, const Origins& o, FaceId f) {
+  const FaceId h = o.of(f).face();
+  REQUIRE(h.valid());
+  CHECK(in.is_hole(h));
+  std::vector<Origin> expected;
+  for (CornerId c : in.corners(h)) {
+    expected.push_back(origin_of(in.vertex(c)));
+    expected.push_back(origin_of(in.edge(c)));
+  }
+  CHECK(same_cycle(face_vertex_origins(out, o, f), expected));
+}
+
+void check_open_catmull_clark(const Mesh& in) {
+  Origins o;
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return catmull_clark(m, origins); }, o);
+  const auto [V, E, F, C, H, B] = open_sizes(in);
+  check_counts(o, {V, E, F, 0}, {0, 2 * E, 0, C}, {0, 0, H, C});
+  for (VertexId w : out.vertices()) {
+    const Origin src = o.of(w);
+    if (src.kind == Kind::face) CHECK(close(out.position(w), centroid_of(in, src.face()), 1e-12));
+    if (src.kind == Kind::edge && is_boundary(in, src.edge())) {
+      CHECK(close(out.position(w), (in.position(in.from(src.edge())) + in.position(in.to(src.edge()))) / 2.0,
+                  1e-12));
+    }
+  }
+  for (FaceId f : out.faces()) {
+    if (out.is_hole(f)) {
+      check_binary_hole(in, out, o, f);
+      continue;
+    }
+    const CornerId c = o.of(f).corner();
+    CHECK(face_vertex_origins(out, o, f) == std::vector<Origin>{origin_of(in.vertex(c)),
+                                                                origin_of(in.edge(c)), origin_of(in.face(c)),
+                                                                origin_of(in.edge(in.prev(c)))});
+  }
+  check_halves_and_corner_edges(in, out, o, [&](CornerId c) {
+    return std::vector<Origin>{origin_of(in.edge(c)), origin_of(in.face(c))};
+  });
+}
+
+void check_open_loop(const Mesh& in) {
+  Origins o;
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return loop(m, origins); }, o);
+  const auto [V, E, F, C, H, B] = open_sizes(in);
+  check_counts(o, {V, E, 0, 0}, {0, 2 * E, 0, C}, {0, 0, F + H, C});
+  for (VertexId w : out.vertices()) {
+    const Origin src = o.of(w);
+    if (src.kind == Kind::edge && is_boundary(in, src.edge())) {
+      CHECK(close(out.position(w), (in.position(in.from(src.edge())) + in.position(in.to(src.edge()))) / 2.0,
+                  1e-12));
+    }
+  }
+  for (FaceId f : out.faces()) {
+    const Origin src = o.of(f);
+    if (out.is_hole(f)) {
+      check_binary_hole(in, out, o, f);
+    } else if (src.kind == Kind::corner) {
+      const CornerId c = src.corner();
+      CHECK(face_vertex_origins(out, o, f) == std::vector<Origin>{origin_of(in.vertex(c)),
+                                                                  origin_of(in.edge(c)),
+                                                                  origin_of(in.edge(in.prev(c)))});
+    } else {
+      std::vector<Origin> expected;
+      for (CornerId c : in.corners(src.face())) expected.push_back(origin_of(in.edge(c)));
+      CHECK(face_vertex_origins(out, o, f) == expected);
+    }
+  }
+  check_halves_and_corner_edges(in, out, o, [&](CornerId c) {
+    return std::vector<Origin>{origin_of(in.edge(c)), origin_of(in.edge(in.prev(c)))};
+  });
+}
+
+// A sqrt(3) step on an open mesh whose loops are all kept (`trisected` false) or all trisected.
+void check_open_sqrt3(const Mesh& in, bool trisected) {
+  Origins o;
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return sqrt3(m, origins); }, o);
+  const auto [V, E, F, C, H, B] = open_sizes(in);
+  const std::size_t T = trisected ? B : 0;  // triangles with a trisected edge: no face point, two edge points
+  check_counts(o, {V, 2 * T, F - T, 0}, {0, E + 2 * T, 0, C - T}, {0, 0, H, C});
+  for (VertexId w : out.vertices()) {
+    const Origin src = o.of(w);
+    if (src.kind == Kind::face) CHECK(close(out.position(w), centroid_of(in, src.face()), 1e-12));
+    if (src.kind == Kind::edge) CHECK(is_boundary(in, src.edge()));
+  }
+  for (FaceId f : out.faces()) {
+    const Origin src = o.of(f);
+    if (out.is_hole(f)) {
+      CHECK(in.is_hole(src.face()));
+      CHECK(out.size(f) == (trisected ? 3 : 1) * in.size(src.face()));
+      continue;
+    }
+    // Triangle c holds vertex(c) unless c's edge is trisected; then its two points and vertex(prev c).
+    const CornerId c = src.corner();
+    const auto around = face_vertex_origins(out, o, f);
+    const bool cut = trisected && in.is_hole(in.face(in.opposite(c)));
+    CHECK(std::count(around.begin(), around.end(), origin_of(cut ? in.vertex(in.prev(c)) : in.vertex(c))) ==
+          1);
+    if (cut) CHECK(std::count(around.begin(), around.end(), origin_of(in.edge(c))) == 2);
+  }
+  // Every edge from an edge lies along it (a flipped edge between the points of its two sides, a kept one or
+  // a third of a trisected one); every other one joins the vertex of its corner to a point of its face.
+  for (EdgeId e : out.edges()) {
+    const Origin src = o.of(e);
+    const auto ends = edge_end_origins(out, o, e);
+    if (src.kind == Kind::edge) {
+      const EdgeId old = src.edge();
+      if (!is_boundary(in, old)) {  // each end the point of a side: its face point or on its trisected edge
+        for (int side = 0; side < 2; ++side) {
+          bool found = false;
+          for (const Origin& end : ends) {
+            found = found || end == origin_of(in.face(old, side));
+            for (CornerId k : in.corners(in.face(old, side))) found = found || end == origin_of(in.edge(k));
+          }
+          CHECK(found);
+        }
+      } else if (!trisected) {
+        CHECK(same_set(ends, {origin_of(in.from(old)), origin_of(in.to(old))}));
+      } else {
+        CHECK(std::count(ends.begin(), ends.end(), origin_of(old)) >= 1);
+      }
+    } else {
+      const CornerId c = src.corner();
+      CHECK(std::count(ends.begin(), ends.end(), origin_of(in.vertex(c))) == 1);
+      const Origin other = ends[0] == origin_of(in.vertex(c)) ? ends[1] : ends[0];
+      const bool of_face = other == origin_of(in.face(c));
+      bool of_edge = false;
+      for (CornerId k : in.corners(in.face(c))) of_edge = of_edge || other == origin_of(in.edge(k));
+      CHECK((of_face || of_edge));
     }
   }
 }
@@ -774,6 +933,26 @@ TEST_CASE("origins: loop and sqrt3") {
   check_sqrt3(with_tombstones(test::icosahedron_soup()));
   check_tombstones_renamed(test::octahedron_soup(), [](const Mesh& m, Origins* o) { return loop(m, o); });
   check_tombstones_renamed(test::octahedron_soup(), [](const Mesh& m, Origins* o) { return sqrt3(m, o); });
+}
+
+TEST_CASE("origins: catmull-clark, loop and sqrt3 under the curve rule on open meshes") {
+  for (const PolygonSoup& soup :
+       {test::grid_soup(3, 2), test::open_tube_soup(5, 2), test::grid_with_holes(4, 4, {{1, 1}})}) {
+    check_open_catmull_clark(build_mesh(soup));
+    const Mesh triangles = build_mesh(test::triangulated(soup));
+    check_open_loop(triangles);
+    check_open_sqrt3(triangles, false);
+    check_open_sqrt3(sqrt3(triangles), true);
+  }
+  check_open_catmull_clark(with_tombstones(test::grid_soup(3, 2)));
+  check_open_loop(with_tombstones(test::triangulated(test::grid_soup(3, 2))));
+  check_open_sqrt3(with_tombstones(test::triangulated(test::grid_soup(3, 2))), false);
+  check_tombstones_renamed(test::grid_soup(3, 2),
+                           [](const Mesh& m, Origins* o) { return catmull_clark(m, o); });
+  check_tombstones_renamed(test::triangulated(test::grid_soup(3, 2)),
+                           [](const Mesh& m, Origins* o) { return loop(m, o); });
+  check_tombstones_renamed(test::triangulated(test::grid_soup(3, 2)),
+                           [](const Mesh& m, Origins* o) { return sqrt3(m, o); });
 }
 
 TEST_CASE("origins: dual and dual-honeycomb-dual") {

@@ -134,8 +134,9 @@ TEST_CASE("scheme registry: ranges that need no mesh are refused when resolving,
   CHECK(parameter_error([] { resolve_scheme_params("mp-pushing", {{"epsilon", 0.6}}); }).second == "epsilon");
   CHECK(parameter_error([] { resolve_scheme_params("mhp", {{"pattern", "H(P"}}); }).second == "pattern");
   CHECK(parameter_error([] {
-          resolve_scheme_params("loop", {{"t", 0.5}});
-        }).first == "loop: unknown parameter 't' (it takes none)");
+          resolve_scheme_params("mlca", {{"t", 0.5}});
+        }).first == "mlca: unknown parameter 't' (it takes none)");
+  CHECK(parameter_error([] { resolve_scheme_params("loop", {{"boundary", "open"}}); }).second == "boundary");
   // The tension's range depends on the face sizes: that check stays in the step.
   CHECK_NOTHROW(resolve_scheme_params("honeycomb", {{"a0", 0.9}}));
   CHECK_THROWS_WITH_AS(apply_scheme(test::cube(), "honeycomb", {{"a0", 0.9}}),

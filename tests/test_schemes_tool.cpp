@@ -51,9 +51,9 @@ TEST_CASE("schemes tool: NAME shows that scheme only") {
   CHECK(r.out.find("  a1  number  default 1.25") != std::string::npos);
   CHECK(r.out.find("catmull-clark") == std::string::npos);
   CHECK(r.out.find("honeycomb-zw") == std::string::npos);
-  Run none = run("schemes loop");
+  Run none = run("schemes mlca");
   REQUIRE(none.exit_code == 0);
-  CHECK(none.out == "loop: Loop: every triangle into four, on triangle meshes\n  (no parameters)\n");
+  CHECK(none.out == "mlca: " + dlfl::find_scheme("mlca").doc + "\n  (no parameters)\n");
 }
 
 TEST_CASE("schemes tool: an unknown name is a usage error with a suggestion and the known names") {
@@ -112,7 +112,10 @@ TEST_CASE("schemes tool: --json is the table, typed") {
   // An unbounded end is null and open.
   CHECK((*find_named(mp, "ratio"))["range"] ==
         nlohmann::json({{"min", 0.0}, {"max", nullptr}, {"min_open", true}, {"max_open", true}}));
-  CHECK((*find_named(list, "sqrt3"))["params"] == nlohmann::json::array());
+  CHECK((*find_named(list, "mlca"))["params"] == nlohmann::json::array());
+  const auto& boundary = *find_named((*find_named(list, "sqrt3"))["params"], "boundary");
+  CHECK(boundary["default"] == "curve");
+  CHECK(boundary["keywords"] == nlohmann::json::array({"curve", "hole"}));
 
   Run one = run("schemes mhp --json");
   REQUIRE(one.exit_code == 0);

@@ -23,7 +23,8 @@ namespace {
 // flipped edges).
 void check_counts(const Mesh& in, bool solid = true) {
   const std::size_t E = in.num_edges(), F = in.num_faces();
-  check_triangle_step(in, sqrt3, {F, 3 * E, 3 * F}, solid);
+  check_triangle_step(
+      in, [](const Mesh& m, Origins* o) { return sqrt3(m, o); }, {F, 3 * E, 3 * F}, solid);
 }
 
 }  // namespace
@@ -112,7 +113,8 @@ TEST_CASE("sqrt3: affine invariance") {
   check_affine_invariance(build_mesh(triangulated(genus_soup(2))), [](const Mesh& m) { return sqrt3(m); });
 }
 
-TEST_CASE("sqrt3: non-triangles, every hole and point spheres are refused, naming the input's element") {
+TEST_CASE(
+    "sqrt3: non-triangles, point spheres and (with boundary=hole) every hole are refused, naming them") {
   // A tombstone face before the offending face: the square pyramid's base split by a diagonal and joined
   // again (one of its triangles is now removed), so the quad base is not at its compacted index.
   Mesh m = build_mesh(triangle_soup({{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}, {0, 0, 1}},
@@ -126,14 +128,14 @@ TEST_CASE("sqrt3: non-triangles, every hole and point spheres are refused, namin
   CHECK(error_message<TopologyError>([&] { sqrt3(m); }) ==
         "sqrt3: " + to_string(quad) + " has 4 corners; sqrt(3) subdivision needs triangles");
 
-  // Holes, even triangular ones: no boundary rule.
+  // With boundary=hole, holes, even triangular ones: that rule has no meaning for sqrt(3)'s flips.
   PolygonSoup open = tetrahedron_soup();
   open.offsets.pop_back();
   open.indices.resize(9);
-  CHECK(error_message<TopologyError>([&] { sqrt3(build_mesh(open)); }) ==
-        "sqrt3: f3 is a hole (a boundary loop) with 3 corners; sqrt(3) subdivision has no boundary rule and "
-        "needs "
-        "a closed triangle mesh");
+  CHECK(
+      error_message<TopologyError>([&] { sqrt3(build_mesh(open), nullptr, {BoundaryRule::hole}); }) ==
+      "sqrt3: f3 is a hole (a boundary loop) with 3 corners; sqrt(3) subdivision with boundary=hole needs a "
+      "closed triangle mesh (boundary=curve takes open meshes)");
 
   Mesh sphere = test::tetrahedron();
   sphere.create_vertex({3, 3, 3});

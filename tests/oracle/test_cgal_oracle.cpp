@@ -1,5 +1,5 @@
-// The classic schemes agree with CGAL's Subdivision_method_3 on closed meshes: positions to 1e-12, faces
-// exactly.
+// The classic schemes agree with CGAL's Subdivision_method_3 on closed meshes, and Catmull-Clark, Loop and
+// sqrt(3) on open meshes (boundary=curve): positions to 1e-12, faces exactly.
 
 #define DOCTEST_CONFIG_IMPLEMENT_WITH_MAIN
 #include <doctest/doctest.h>
@@ -11,6 +11,7 @@
 #include <dlfl/schemes/doo_sabin.h>
 #include <dlfl/schemes/loop.h>
 #include <dlfl/schemes/sqrt3.h>
+#include "../open_meshes.h"
 #include "../scheme_meshes.h"
 #include "../test_meshes.h"
 #include "../triangle_meshes.h"
@@ -80,6 +81,23 @@ std::vector<PolygonSoup> closed_triangle_meshes() {
           perturbed(test::triangulated(test::genus_soup(1)))};
 }
 
+// Open polygon meshes: one and two boundary loops, three on a perturbed grid. CGAL has no corner rule, so
+// the grids' corners (two edges) are compared with sharp_corners = false.
+std::vector<PolygonSoup> open_polygon_meshes() {
+  return {test::open_tube_soup(8, 3), test::halves_at_z(test::capped_tube_soup(6, 4)).first,
+          perturbed(test::open_tube_soup(5, 2)), test::grid_with_holes(5, 4, {{1, 1}, {3, 2}}),
+          perturbed(test::grid_with_holes(4, 4, {{1, 1}}))};
+}
+
+// The same triangulated (a fan per face, which leaves every boundary edge as it is).
+std::vector<PolygonSoup> open_triangle_meshes() {
+  std::vector<PolygonSoup> meshes;
+  for (const PolygonSoup& soup : open_polygon_meshes()) meshes.push_back(test::triangulated(soup));
+  return meshes;
+}
+
+const BoundaryOptions cgal_boundary{BoundaryRule::curve, false};
+
 // Two steps of our scheme and two of CGAL's (`cgal`, given the iteration count) on every soup: the same
 // polygons (positions to 1e-12), after a check of our face count against its closed form `faces`.
 template <class Ours, class Cgal, class Faces>
@@ -89,7 +107,7 @@ void check_two_steps_agree(const std::vector<PolygonSoup>& soups, Ours ours_step
     SurfaceMesh sm = to_cgal(soup);
     cgal(sm, CGAL::parameters::number_of_iterations(2));
     const Mesh ours = ours_step(ours_step(build_mesh(soup)));
-    CHECK(ours.num_faces() == faces(soup));
+    CHECK(ours.num_surface_faces() == faces(soup));  // hole faces left out, as CGAL has none
     require_same(to_polygons(ours), from_cgal(sm));
   }
 }
@@ -143,4 +161,48 @@ TEST_CASE("oracle: sqrt3 agrees with CGAL on closed triangle meshes") {
       closed_triangle_meshes(), [](const Mesh& m) { return sqrt3(m); },
       [](SurfaceMesh& sm, auto iterations) { CGAL::Subdivision_method_3::Sqrt3_subdivision(sm, iterations); },
       [](const PolygonSoup& soup) { return 9 * soup.num_faces(); });  // 3 F per step
+}
+
+TEST_CASE("oracle: catmull-clark agrees with CGAL on open meshes (boundary=curve)") {
+  // CGAL's CatmullClark_mask_3::border_node puts a border edge's point at its midpoint and a border vertex at
+  // (u + 6 v + w) / 8 of its border neighbours u, w, which PQQ_1step uses for every vertex on the border; the
+  // border stays one loop of twice the edges. Our curve rule, corners included (sharp_corners = false).
+  // The surface polygons count as in the closed case: 4 per surface corner after two steps.
+  check_two_steps_agree(
+      open_polygon_meshes(), [](const Mesh& m) { return catmull_clark(m, nullptr, cgal_boundary); },
+      [](SurfaceMesh& sm, auto iterations) {
+        CGAL::Subdivision_method_3::CatmullClark_subdivision(sm, iterations);
+      },
+      [](const PolygonSoup& soup) { return 4 * soup.indices.size(); });
+}
+
+TEST_CASE("oracle: loop agrees with CGAL on open triangle meshes (boundary=curve)") {
+  // Loop_mask_3::border_node is the same pair of rules (midpoint, (u + 6 v + w) / 8), used by PTQ_1step for
+  // every border edge and vertex.
+  check_two_steps_agree(
+      open_triangle_meshes(), [](const Mesh& m) { return loop(m, nullptr, cgal_boundary); },
+      [](SurfaceMesh& sm, auto iterations) { CGAL::Subdivision_method_3::Loop_subdivision(sm, iterations); },
+      [](const PolygonSoup& soup) { return 16 * soup.num_faces(); });
+}
+
+TEST_CASE("oracle: sqrt3 agrees with CGAL on open triangle meshes over pairs of steps (boundary=curve)") {
+  // Sqrt3_1step refines the border only in every second step of one call (refine_border = i % 2 == 1): in
+  // the first, border vertices stay and border edges are not flipped; in the second, Sqrt3_mask_3::
+  // border_node puts two points on each border edge s -> t at (r + 16 s + 10 t) / 27 and (10 s + 16 t + u)
+  // / 27 (r before s, u after t) and moves the border vertices to (4 r + 19 s + 4 t) / 27, the triangle on
+  // the edge is cut into three from its third vertex, and the other old edges are flipped. Ours, with the
+  // parity carried from step to step by the sqrt3_trisect mark; compared after 2 and 4 steps (9 and 81 F).
+  check_two_steps_agree(
+      open_triangle_meshes(), [](const Mesh& m) { return sqrt3(m, nullptr, cgal_boundary); },
+      [](SurfaceMesh& sm, auto iterations) { CGAL::Subdivision_method_3::Sqrt3_subdivision(sm, iterations); },
+      [](const PolygonSoup& soup) { return 9 * soup.num_faces(); });
+  for (const PolygonSoup& soup : open_triangle_meshes()) {
+    CAPTURE(soup.num_faces());
+    SurfaceMesh sm = to_cgal(soup);
+    CGAL::Subdivision_method_3::Sqrt3_subdivision(sm, CGAL::parameters::number_of_iterations(4));
+    Mesh ours = build_mesh(soup);
+    for (int step = 0; step < 4; ++step) ours = sqrt3(ours, nullptr, cgal_boundary);
+    CHECK(ours.num_surface_faces() == 81 * soup.num_faces());
+    require_same(to_polygons(ours), from_cgal(sm));
+  }
 }

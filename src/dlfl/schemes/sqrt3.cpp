@@ -2,13 +2,17 @@
 
 #include <cmath>
 #include <numbers>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include <dlfl/dense_mesh.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/boundary_curve.h>
 #include <dlfl/schemes/detail/require_triangles.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
+#include <dlfl/schemes/detail/sqrt3_steps.h>
 #include <dlfl/schemes/detail/valence_weights.h>
 
 namespace dlfl {
@@ -71,9 +75,13 @@ namespace {
 //   3 s0 + 1 at V + face(s1), twin 3 s1 + 1;        3 s1 + 1 at V + face(s0), twin 3 s0 + 1.
 // Every output corner is set exactly once (corner 0 and 1 of T(s) for the edge leaving s, corner 2 of T(r)
 // for the edge leaving prev(r)), so one pass over the edges builds the whole connectivity.
-Mesh sqrt3(const Mesh& input, Origins* origins) {
-  const detail::DenseTriangles dense(input, "sqrt3", "sqrt(3) subdivision", detail::TriangleHoles::refused);
+Mesh sqrt3(const Mesh& input, Origins* origins, const BoundaryOptions& boundary) {
+  const bool curve = boundary.rule == BoundaryRule::curve;
+  const detail::DenseTriangles dense(input, "sqrt3", "sqrt(3) subdivision",
+                                     curve ? detail::TriangleHoles::any : detail::TriangleHoles::refused);
   const Mesh& m = dense.mesh();
+  const auto marks = curve ? detail::sharp_marks(m) : std::nullopt;
+  if (curve && m.num_hole_faces() > 0) return detail::sqrt3_open(input, m, boundary, marks, origins);
   const auto [nv, ne, nf, nc] = dense_counts(m);  // nc = 3 nf
   const std::uint32_t face_base = nv;             // vertex of the face point of face f
   MeshAssembler out(std::size_t(nv) + nf, nc, 3);
@@ -108,26 +116,33 @@ Mesh sqrt3(const Mesh& input, Origins* origins) {
     out.set_corner(3 * k1 + 1, f0, 3 * k0 + 1);
   }
 
-  // Vertex points, with Kobbelt's weight a_n for valence n.
-  const detail::ValenceWeights alpha_of(
-      [](std::uint32_t n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; });
-  for (std::uint32_t v = 0; v < nv; ++v) {
-    const std::uint32_t n = valence[v];  // >= 2: no point spheres, no self-loops
-    const double alpha = alpha_of(n);
-    out.set_position(v, (1.0 - alpha) * m.position(VertexId(v)) + (alpha / n) * sum[v]);
-  }
+  detail::set_sqrt3_vertex_points(m, sum, valence, out);
   Mesh result = out.finish();
+  if (curve) detail::carry_sharp_marks(marks, result, nv);
   if (origins) sqrt3_origins(input, m, result, *origins);
   return result;
 }
 
 namespace detail {
 
+void set_sqrt3_vertex_points(const Mesh& m, std::span<const glm::dvec3> sum,
+                             std::span<const std::uint32_t> valence, MeshAssembler& out) {
+  // Kobbelt's weight a_n for valence n.
+  static const ValenceWeights alpha_of(
+      [](std::uint32_t n) { return (4.0 - 2.0 * std::cos(2.0 * std::numbers::pi / n)) / 9.0; });
+  for (std::uint32_t v = 0; v < sum.size(); ++v) {
+    const std::uint32_t n = valence[v];  // >= 2: no point spheres, no self-loops
+    const double alpha = alpha_of(n);
+    out.set_position(v, (1.0 - alpha) * m.position(VertexId(v)) + (alpha / n) * sum[v]);
+  }
+}
+
 SchemeSpec sqrt3_scheme() {
-  return parameterless_scheme(
+  return boundary_scheme(
       sqrt3, "sqrt3",
-      "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on closed triangle meshes",
-      [](const MeshCounts& c) {  // V' = V + F, E' = 3E, F' = 3F
+      "Kobbelt's sqrt(3): a point per triangle and every old edge flipped, on triangle meshes",
+      // V' = V + F, E' = 3E, F' = 3F (on open meshes under the curve rule, see the header)
+      [](const MeshCounts& c) {
         return MeshCounts{c.vertices + c.faces, 3 * c.edges, 3 * c.faces};
       });
 }

@@ -8,12 +8,12 @@
 
 namespace dlfl::detail {
 
-/// Whether a scheme on triangles takes hole faces: Loop does (triangular holes), sqrt(3) has no boundary
-/// rule.
-enum class TriangleHoles { allowed, refused };
+/// Which hole faces a scheme on triangles takes: triangular ones only (Loop with boundary=hole subdivides
+/// them like faces), any (a boundary rule keeps them whole), or none (sqrt(3) with boundary=hole).
+enum class TriangleHoles { triangles, any, refused };
 
-/// Refuses, in face order, a point sphere, a face that is not a triangle and, when `holes` is `refused`, any
-/// hole: TopologyError "SCHEME: f3 has 4 corners; TITLE needs triangles" and the like, naming the handles of
+/// Refuses, in face order, a point sphere, a face that is not a triangle and the holes that `holes` does not
+/// take: TopologyError "SCHEME: f3 has 4 corners; TITLE needs triangles" and the like, naming the handles of
 /// `mesh` (check the input, not a compacted copy). `title` names the scheme in prose ("Loop subdivision").
 void require_triangles(const Mesh& mesh, std::string_view scheme, std::string_view title,
                        TriangleHoles holes);

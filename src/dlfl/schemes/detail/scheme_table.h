@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include <dlfl/schemes/detail/boundary_params.h>
 #include <dlfl/schemes/scheme_registry.h>
 
 namespace dlfl::detail {
@@ -19,6 +20,21 @@ inline SchemeSpec parameterless_scheme(Mesh (*step)(const Mesh&, Origins*), std:
   spec.doc = std::move(doc);
   spec.apply = [step](const Mesh& mesh, const Params&, Origins* origins) { return step(mesh, origins); };
   spec.counts = [counts](const MeshCounts& c, const Params&) { return counts(c); };
+  return spec;
+}
+
+/// The declaration of a scheme whose parameters are the boundary options (`boundary` and `sharp_corners`,
+/// boundary_params.h), whose step is `step(mesh, origins, options)` and whose closed-form counts are
+/// `counts`.
+inline SchemeSpec boundary_scheme(Mesh (*step)(const Mesh&, Origins*, const BoundaryOptions&),
+                                  std::string name, std::string doc,
+                                  MeshCounts (*counts)(const MeshCounts&)) {
+  // Name, doc and counts as a scheme without parameters; then the parameters and a step that reads them.
+  SchemeSpec spec = parameterless_scheme(nullptr, std::move(name), std::move(doc), counts);
+  spec.params = boundary_param_specs();
+  spec.apply = [step](const Mesh& mesh, const Params& params, Origins* origins) {
+    return step(mesh, origins, boundary_options_from(params));
+  };
   return spec;
 }
 
