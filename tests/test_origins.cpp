@@ -354,9 +354,13 @@ glm::dvec3 doo_sabin_point(const Mesh& in, CornerId c) {
   return p;
 }
 
+// Under boundary=hole, the rule these checks describe (on a closed mesh both rules agree).
+constexpr BoundaryOptions hole_rule{BoundaryRule::hole};
+
 void check_doo_sabin(const Mesh& in) {
   Origins o;
-  const Mesh out = checked_step(in, doo_sabin, o);
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return doo_sabin(m, hole_rule, origins); }, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {0, 0, 0, C}, {0, C, 0, C}, {V, E, F, 0});
   for (VertexId w : out.vertices())
@@ -459,6 +463,7 @@ void check_honeycomb(const Mesh& in) {
   HoneycombParams p;
   p.t = 0.3;
   p.a = 0.6;
+  p.boundary = hole_rule;
   Origins o;
   const Mesh out = honeycomb(in, p, &o);
   CHECK(out == honeycomb(in, p));
@@ -469,7 +474,9 @@ void check_honeycomb(const Mesh& in) {
   }
   // Zhang-Wang has the honeycomb's topology and handles, so the same origins.
   Origins zw;
-  const Mesh z = zhang_wang_honeycomb(in, {}, &zw);
+  ZhangWangParams zp;
+  zp.boundary = hole_rule;
+  const Mesh z = zhang_wang_honeycomb(in, zp, &zw);
   CHECK(zw.vertices == o.vertices);
   CHECK(zw.edges == o.edges);
   CHECK(zw.faces == o.faces);
@@ -548,7 +555,8 @@ void check_sqrt3(const Mesh& in) {
 
 void check_dual(const Mesh& in) {
   Origins o;
-  const Mesh out = checked_step(in, dual, o);
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return dual(m, origins); }, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {0, 0, F, 0}, {0, E, 0, 0}, {V, 0, 0, 0});
   for (VertexId w : out.vertices()) CHECK(close(out.position(w), centroid_of(in, o.of(w).face()), 1e-12));

@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include <dlfl/schemes/detail/boundary_params.h>
 #include <dlfl/schemes/scheme_registry.h>
 
 namespace dlfl::detail {
@@ -18,6 +19,22 @@ inline SchemeSpec parameterless_scheme(Mesh (*step)(const Mesh&, Origins*), std:
   spec.name = std::move(name);
   spec.doc = std::move(doc);
   spec.apply = [step](const Mesh& mesh, const Params&, Origins* origins) { return step(mesh, origins); };
+  spec.counts = [counts](const MeshCounts& c, const Params&) { return counts(c); };
+  return spec;
+}
+
+/// The declaration of a scheme whose only parameters are the boundary options (`boundary`, `sharp_corners`,
+/// see detail/boundary_params.h), whose step is `step(mesh, options, origins)`.
+inline SchemeSpec boundary_scheme(Mesh (*step)(const Mesh&, const BoundaryOptions&, Origins*),
+                                  std::string name, std::string doc,
+                                  MeshCounts (*counts)(const MeshCounts&)) {
+  SchemeSpec spec;
+  spec.name = std::move(name);
+  spec.doc = std::move(doc);
+  spec.params = boundary_param_specs();
+  spec.apply = [step](const Mesh& mesh, const Params& p, Origins* origins) {
+    return step(mesh, boundary_options_from(p), origins);
+  };
   spec.counts = [counts](const MeshCounts& c, const Params&) { return counts(c); };
   return spec;
 }
