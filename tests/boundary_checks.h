@@ -11,9 +11,11 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/build_mesh.h>
 #include <dlfl/mesh.h>
 #include <dlfl/schemes/boundary_rule.h>
 #include <dlfl/schemes/scheme_registry.h>
+#include "open_meshes.h"
 
 namespace dlfl::test {
 
@@ -76,6 +78,13 @@ inline std::vector<VertexId> marked_vertices(const Mesh& m) {
     if ((*marks)[v]) marked.push_back(v);
   }
   return marked;
+}
+
+/// A mesh every scheme with a boundary rule refuses under boundary=curve: its `sharp` mark is not boolean.
+inline Mesh badly_marked_grid() {
+  Mesh m = build_mesh(grid_with_holes(2, 2, {}));
+  m.add_vertex_attribute<int>(sharp_vertex_attribute, 1);
+  return m;
 }
 
 /// `steps` steps of the scheme with these parameters.

@@ -51,13 +51,6 @@ double max_radius(const std::vector<glm::dvec3>& points) {
 
 const Params hole_rule = {{"boundary", "hole"}};
 
-// A mesh every boundary scheme refuses: a `sharp` mark that is not boolean.
-Mesh badly_marked_grid() {
-  Mesh m = build_mesh(grid_with_holes(2, 2, {}));
-  m.add_vertex_attribute<int>(sharp_vertex_attribute, 1);
-  return m;
-}
-
 }  // namespace
 
 TEST_CASE("doo-sabin: the boundary is Chaikin's refinement of the boundary polygon") {

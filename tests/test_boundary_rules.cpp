@@ -211,8 +211,7 @@ TEST_CASE("boundary rules: a vertex marked sharp stays in place and its mark fol
 }
 
 TEST_CASE("boundary rules: a sharp mark that is not boolean is refused, naming the scheme") {
-  Mesh grid = build_mesh(grid_with_holes(2, 2, {}));
-  grid.add_vertex_attribute<int>(sharp_vertex_attribute, 0);
+  const Mesh grid = badly_marked_grid();
   const Mesh before = grid;
   for (const std::string& scheme : boundary_schemes) {
     CAPTURE(scheme);

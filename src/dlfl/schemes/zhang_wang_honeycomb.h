@@ -23,10 +23,10 @@
 //   every edge is. Weight: s_n = 1/2 for every n. Reasons (docs/zhang_wang.md, docs/boundaries.md):
 //   (a) a weight that depended on the valence n would let the faces inside change the boundary curve, so
 //       two meshes sharing a boundary loop would crack apart;
-//   (b) the paper adds v_b only at vertices of valence greater than 2 and keeps the others; after one step
-//       every other boundary vertex is a v_b of valence 2, and s_n = 1/2 is the only constant weight for
-//       which such a vertex already lies where (15) would put it (the midpoint of its neighbours), so keeping
-//       it and smoothing it agree and the rule is the same at every step;
+//   (b) the paper adds v_b only at vertices of valence greater than 2, and we keep a vertex of valence 2 in
+//       place (a corner); after one step every other boundary vertex is a v_b of valence 2, and s_n = 1/2 is
+//       the only constant weight for which such a vertex already lies where (15) would put it (the midpoint
+//       of its neighbours), so keeping it and smoothing it agree and the rule is the same at every step;
 //   (c) the boundary then depends on the boundary polygon alone, and its limit is the uniform quadratic
 //       B-spline whose control polygon is the polygon of the boundary edges' midpoints: a C1 curve through
 //       (v_1 + 2v + v_2)/4 at every boundary vertex, the v_b of the first step, which never moves again.

@@ -12,8 +12,8 @@ HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_poin
   // The origins of faces around vertices and of front edges need the front corners.
   want_face_of_vertex = want_face_of_vertex || origins;
   const bool curve = boundary.rule == BoundaryRule::curve && has_hole(mesh);
-  std::size_t C = 0, F = 0, P = 0,
-              H = 0;  // corners and faces of 2 or more corners, point spheres, hole corners
+  // Corners and faces of 2 or more corners, point spheres, and the corners of holes under the boundary rule.
+  std::size_t C = 0, F = 0, P = 0, H = 0;
   std::uint32_t max_n = 0;
   for (FaceId f : mesh.faces()) {
     const std::uint32_t n = mesh.size(f);
