@@ -30,6 +30,7 @@
 #include <dlfl/schemes/scheme_registry.h>
 #include <dlfl/schemes/sqrt3.h>
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
+#include "open_meshes.h"
 #include "triangle_meshes.h"
 
 using namespace dlfl;
@@ -882,6 +883,55 @@ TEST_CASE("origins: mlca on quads, on a mixed mesh (split first) and with a poin
   CHECK(o.of(last) == origin_of(p));
   CHECK(o.of(out.face(out.corner(last))) == origin_of(p));
   CHECK(out.position(last) == glm::dvec3(5, 5, 5));
+}
+
+TEST_CASE("origins: the boundary rules of doo-sabin, the honeycombs, dual and dual-honeycomb-dual") {
+  // A grid with a hole (corners of two edges, kept) and a tube with a marked vertex: every element has its
+  // origin, and the boundary points stem from what the headers say, where the rules put them.
+  Mesh tube = build_mesh(test::open_tube_soup(8, 3));
+  tube.add_vertex_attribute<bool>(sharp_vertex_attribute, false)[VertexId(2)] = true;
+  for (const Mesh& in : {build_mesh(test::grid_with_holes(4, 3, {{1, 1}})), tube}) {
+    for (const std::string name : {"doo-sabin", "honeycomb", "honeycomb-zw", "dual", "dual-honeycomb-dual"}) {
+      CAPTURE(name);
+      Origins o;
+      const Mesh out = apply_scheme(in, name, {}, &o);
+      check_well_formed(in, out, o);
+      CHECK(apply_scheme(in, name) == out);
+      const bool doo_sabin = name == std::string("doo-sabin"), honeycombs = name.rfind("honeycomb", 0) == 0;
+      if (!doo_sabin && !honeycombs) continue;
+      for (FaceId f : out.faces()) {
+        if (!out.is_hole(f)) continue;
+        for (CornerId c : out.corners(f)) {
+          const glm::dvec3 q = out.position(out.vertex(c));
+          const Origin src = o.of(out.vertex(c));
+          if (src.kind == Kind::vertex) {  // a honeycomb's vertex point: itself (sharp) or v/2 + (u + w)/4
+            REQUIRE(honeycombs);
+            const VertexId v = src.vertex();
+            CHECK(out.valence(out.vertex(c)) == 2);
+            bool found = false;
+            for (CornerId h : in.corners(v)) {
+              if (!in.is_hole(in.face(h))) continue;
+              const glm::dvec3 u = in.position(in.vertex(in.prev(h))), w = in.position(in.vertex(in.next(h)));
+              found = found || q == in.position(v) || q == 0.5 * in.position(v) + 0.25 * (u + w);
+            }
+            CHECK(found);
+            continue;
+          }
+          REQUIRE(src.kind == Kind::corner);
+          const CornerId h = src.corner();
+          REQUIRE(in.is_hole(in.face(h)));
+          const glm::dvec3 a = in.position(in.vertex(h)), b = in.position(in.vertex(in.next(h))),
+                           z = in.position(in.vertex(in.prev(h)));
+          if (honeycombs) {
+            CHECK(q == 0.5 * (a + b));  // the midpoint of the hole corner's edge
+          } else {  // Chaikin's points near a on its two boundary edges (or a, or a midpoint, at sharp ends)
+            const bool chaikin = close(q, 0.75 * a + 0.25 * b, 1e-15) || close(q, 0.75 * a + 0.25 * z, 1e-15);
+            CHECK((chaikin || q == a || q == 0.5 * (a + b) || q == 0.5 * (a + z)));
+          }
+        }
+      }
+    }
+  }
 }
 
 TEST_CASE("origins: through the registry, for every scheme") {

@@ -147,42 +147,6 @@ Mesh doo_sabin(const Mesh& input, const BoundaryOptions& boundary, Origins* orig
                                      });
   const auto vin = [&](std::uint32_t k) { return vslot[k] + (split(k) ? 1 : 0); };
 
-  // Points: output vertex k is the point of input corner k, computed in its face (for a hole under the
-  // boundary rule: out(k)); the in-points of split hole corners follow.
-  std::vector<glm::dvec3> points(nvert);
-  {
-    WeightTable table;
-    std::vector<glm::dvec3> v, p;
-    std::vector<double> trig;
-    for (std::uint32_t f = 0; f < nf; ++f) {
-      if (curve && m.is_hole(FaceId(f))) continue;
-      const std::uint32_t n = m.size(FaceId(f));
-      v.resize(n);
-      p.resize(n);
-      std::uint32_t i = 0;
-      for (CornerId c : m.corners(FaceId(f))) v[i++] = m.position(m.vertex(c));
-      face_points(v.data(), p.data(), n, table, trig);
-      i = 0;
-      for (CornerId c : m.corners(FaceId(f))) points[c.index()] = p[i++];
-    }
-  }
-  std::vector<std::uint32_t> kept;  // output vertices at sharp vertices, marked in the result
-  if (curve) {
-    // Chaikin along the boundary (clamped at sharp vertices): only the boundary polygon is read.
-    for (std::uint32_t k = 0; k < nc; ++k) {
-      if (!hole_corner[k]) continue;
-      const CornerId h(k);
-      const VertexId a = m.vertex(h), b = m.vertex(m.next(h)), z = m.vertex(m.prev(h));
-      const glm::dvec3 pa = m.position(a);
-      points[k] = detail::chaikin_point(pa, m.position(b), sharp[a.index()], sharp[b.index()]);
-      if (in_point[k] != k) {
-        points[in_point[k]] = detail::chaikin_point(pa, m.position(z), false, sharp[z.index()]);
-      } else {
-        kept.push_back(k);
-      }
-    }
-  }
-
   // Faces of dissolved V-faces are left out of the offsets (they would be empty).
   std::vector<std::uint32_t> face_of_vertex;  // output face of each V-face, when some are dissolved
   if (curve && std::find(dissolved.begin(), dissolved.end(), true) != dissolved.end()) {
@@ -197,7 +161,41 @@ Mesh doo_sabin(const Mesh& input, const BoundaryOptions& boundary, Origins* orig
   }
 
   MeshAssembler out(nvert, offsets);
-  for (std::uint32_t k = 0; k < nvert; ++k) out.set_position(k, points[k]);
+
+  // Points: output vertex k is the point of input corner k, computed in its face (for a hole under the
+  // boundary rule: out(k)); the in-points of split hole corners follow.
+  {
+    WeightTable table;
+    std::vector<glm::dvec3> v, p;
+    std::vector<double> trig;
+    for (std::uint32_t f = 0; f < nf; ++f) {
+      if (curve && m.is_hole(FaceId(f))) continue;
+      const std::uint32_t n = m.size(FaceId(f));
+      v.resize(n);
+      p.resize(n);
+      std::uint32_t i = 0;
+      for (CornerId c : m.corners(FaceId(f))) v[i++] = m.position(m.vertex(c));
+      face_points(v.data(), p.data(), n, table, trig);
+      i = 0;
+      for (CornerId c : m.corners(FaceId(f))) out.set_position(c.index(), p[i++]);
+    }
+  }
+  std::vector<std::uint32_t> kept;  // output vertices at sharp vertices, marked in the result
+  if (curve) {
+    // Chaikin along the boundary (clamped at sharp vertices): only the boundary polygon is read.
+    for (std::uint32_t k = 0; k < nc; ++k) {
+      if (!hole_corner[k]) continue;
+      const CornerId h(k);
+      const VertexId a = m.vertex(h), b = m.vertex(m.next(h)), z = m.vertex(m.prev(h));
+      const glm::dvec3 pa = m.position(a);
+      out.set_position(k, detail::chaikin_point(pa, m.position(b), sharp[a.index()], sharp[b.index()]));
+      if (in_point[k] != k) {
+        out.set_position(in_point[k], detail::chaikin_point(pa, m.position(z), false, sharp[z.index()]));
+      } else {
+        kept.push_back(k);
+      }
+    }
+  }
 
   // Twins. Take an edge e from A to B; c0 = corner(e,0) (A to B, in face f0) and c1 = corner(e,1) (B to A,
   // in face f1). Seen from outside with A on the left and B on the right, f0 lies above the edge (a face is

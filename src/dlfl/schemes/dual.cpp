@@ -48,12 +48,14 @@ Mesh detail::dual(const Mesh& input, const BoundaryOptions& boundary, Origins* o
   const bool open = holes > 0;
   const std::vector<bool> sharp =
       open ? detail::sharp_boundary_vertices(m, boundary, "dual") : std::vector<bool>();
-  std::vector<std::uint32_t> face_vertex(nf), mid(open ? nc : 0), kept(open ? nc : 0);
+  // face_vertex[f]: the output vertex of face f (f itself on a closed mesh, where the table is left empty).
+  std::vector<std::uint32_t> face_vertex(open ? nf : 0), mid(open ? nc : 0), kept(open ? nc : 0);
   std::vector<std::uint32_t> kept_vertices;
-  std::uint32_t nvert = 0;
-  for (std::uint32_t f = 0; f < nf; ++f) {
+  std::uint32_t nvert = open ? 0 : nf;
+  for (std::uint32_t f = 0; f < nf && open; ++f) {
     if (!m.is_hole(FaceId(f))) face_vertex[f] = nvert++;
   }
+  const auto vertex_of_face = [&](std::uint32_t f) { return open ? face_vertex[f] : f; };
   const auto is_hole_corner = [&](CornerId c) { return open && m.is_hole(m.face(c)); };
   const auto is_sharp = [&](CornerId c) { return sharp[m.vertex(c).index()]; };
   if (open) {
@@ -97,7 +99,7 @@ Mesh detail::dual(const Mesh& input, const BoundaryOptions& boundary, Origins* o
     if (m.is_hole(FaceId(f))) continue;
     glm::dvec3 sum(0.0);
     for (CornerId c : m.corners(FaceId(f))) sum += m.position(m.vertex(c));
-    out.set_position(face_vertex[f], sum / double(m.size(FaceId(f))));
+    out.set_position(vertex_of_face(f), sum / double(m.size(FaceId(f))));
   }
   for (std::uint32_t k = 0; k < nc; ++k) {
     const CornerId h(k);
@@ -118,7 +120,7 @@ Mesh detail::dual(const Mesh& input, const BoundaryOptions& boundary, Origins* o
   for (std::uint32_t k = 0; k < nc; ++k) {
     const CornerId c(k);
     const std::uint32_t cross = cross_slot(c);
-    const std::uint32_t from = is_hole_corner(c) ? mid[m.prev(c).index()] : face_vertex[m.face(c).index()];
+    const std::uint32_t from = is_hole_corner(c) ? mid[m.prev(c).index()] : vertex_of_face(m.face(c).index());
     out.set_corner(cross, from, cross_slot(m.next(m.opposite(m.prev(c)))));
     if (!is_hole_corner(c)) continue;
     const std::uint32_t before = hslot[m.prev(c).index()] + (is_sharp(m.prev(c)) ? 1 : 0);  // its midpoint
@@ -149,7 +151,7 @@ Mesh detail::dual(const Mesh& input, const BoundaryOptions& boundary, Origins* o
     if (origins) {
       detail::reset_origins(*origins, result);
       for (std::uint32_t f = 0; f < nf; ++f) {
-        if (!m.is_hole(FaceId(f))) origins->vertices[face_vertex[f]] = in.face(f);
+        if (!m.is_hole(FaceId(f))) origins->vertices[vertex_of_face(f)] = in.face(f);
       }
       for (std::uint32_t v = 0; v < nv; ++v) origins->faces[v] = in.vertex(v);
       std::uint32_t hole = nv;
