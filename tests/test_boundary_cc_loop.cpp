@@ -35,7 +35,7 @@ struct BinaryScheme {
 const std::vector<BinaryScheme>& binary_schemes() {
   static const std::vector<BinaryScheme> schemes = {
       {"catmull-clark", false,
-       [](const Mesh& m, const BoundaryOptions& b) { return catmull_clark(m, nullptr, b); },
+       [](const Mesh& m, const BoundaryOptions& b) { return catmull_clark(m, b); },
        [](const OpenCounts& c) {
          // A quad per surface corner (C_s = 2E - B), an edge point per edge, a face point per surface face;
          // every hole keeps its face with twice the sides.
@@ -43,7 +43,7 @@ const std::vector<BinaryScheme>& binary_schemes() {
          return OpenCounts{c.vertices + c.edges + c.faces, 2 * c.edges + corners, corners, c.holes,
                            2 * c.boundary};
        }},
-      {"loop", true, [](const Mesh& m, const BoundaryOptions& b) { return loop(m, nullptr, b); },
+      {"loop", true, [](const Mesh& m, const BoundaryOptions& b) { return loop(m, b); },
        [](const OpenCounts& c) {
          return OpenCounts{c.vertices + c.edges, 2 * c.edges + 3 * c.faces, 4 * c.faces, c.holes,
                            2 * c.boundary};
@@ -84,7 +84,7 @@ TEST_CASE(
   }
   // The old rule smooths each half's boundary as if capped, so the halves part (by about a third of the
   // radius here).
-  const SchemeStep hole = [](const Mesh& m) { return catmull_clark(m, nullptr, {BoundaryRule::hole}); };
+  const SchemeStep hole = [](const Mesh& m) { return catmull_clark(m, {BoundaryRule::hole}); };
   CHECK(crack(hole, capped_tube_soup(6, 4), 1) > 0.1);
 }
 
@@ -267,7 +267,7 @@ TEST_CASE("boundary curve: dlfl subdivide uses the curve rule, and boundary=hole
               hole.string() + "'")
               .exit_code == 0);
   CHECK(hash_of(curve) == mesh_hash(catmull_clark(in)));
-  CHECK(hash_of(hole) == mesh_hash(catmull_clark(in, nullptr, {BoundaryRule::hole})));
+  CHECK(hash_of(hole) == mesh_hash(catmull_clark(in, {BoundaryRule::hole})));
   CHECK(hash_of(curve) != hash_of(hole));
 }
 #endif

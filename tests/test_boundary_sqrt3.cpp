@@ -128,7 +128,7 @@ TEST_CASE("boundary curve, sqrt3: corners and marked vertices stay put, and stay
   // and (3, 1).
   const Mesh smooth = steps_of(
       [](const Mesh& x) {
-        return sqrt3(x, nullptr, {BoundaryRule::curve, false});
+        return sqrt3(x, {BoundaryRule::curve, false});
       },
       grid, 2);
   CHECK(close(smooth.position(VertexId(3)), glm::dvec3(77.0 / 27, 4.0 / 27, 0), 1e-15));

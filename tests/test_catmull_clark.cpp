@@ -102,7 +102,7 @@ TEST_CASE("catmull-clark: point spheres are refused and tombstones do not matter
 
 TEST_CASE("catmull-clark: with boundary=hole, hole faces are subdivided and their quads stay holes") {
   const Mesh in = build_mesh(test::grid_soup(3, 2));  // 6 quads and one hole of 10 corners
-  const Mesh out = catmull_clark(in, nullptr, {BoundaryRule::hole});
+  const Mesh out = catmull_clark(in, {BoundaryRule::hole});
   require_valid(out);
   std::size_t holes = 0;
   for (FaceId f : out.faces()) holes += out.is_hole(f);

@@ -152,10 +152,11 @@ TEST_CASE("doo-sabin: affine invariance") {
   check_affine_invariance(build_mesh(torus_soup(6, 4)), [](const Mesh& m) { return doo_sabin(m); });
 }
 
-TEST_CASE("doo-sabin: a hole is subdivided like a face and its copy stays the only hole") {
+TEST_CASE(
+    "doo-sabin: under boundary=hole a hole is subdivided like a face and its copy stays the only hole") {
   const Mesh in = build_mesh(grid_soup(3, 2));  // 6 quads and one hole of 10 corners; V = 12, E = 17
   REQUIRE(count_holes(in) == 1);
-  const Mesh out = doo_sabin(in);
+  const Mesh out = doo_sabin(in, BoundaryOptions{BoundaryRule::hole});
   check_valid_same_genus(in, out);
   CHECK(out.num_faces() == 12 + 17 + 7);
   CHECK(count_holes(out) == 1);

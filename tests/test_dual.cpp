@@ -90,9 +90,10 @@ TEST_CASE("dual: affine invariance") {
   check_affine_invariance(build_mesh(genus_soup(2)), [](const Mesh& m) { return dual(m); });
 }
 
-TEST_CASE("dual: holes, point spheres and edges with one face on both sides are refused, naming them") {
-  CHECK(error_message<TopologyError>([] { dual(build_mesh(grid_soup(2, 2))); }) ==
-        "dual: f4 is a hole: the dual of an open mesh is not defined");
+TEST_CASE(
+    "dual: holes (under boundary=hole), point spheres and edges with one face on both sides are refused") {
+  CHECK(error_message<TopologyError>([] { dual(build_mesh(grid_soup(2, 2)), {BoundaryRule::hole}); }) ==
+        "dual: f4 is a hole: boundary=hole refuses open meshes (boundary=curve gives their dual)");
 
   Mesh m = test::cube();
   m.delete_vertex(m.create_vertex({9, 9, 9}));  // a tombstone v8 (and f6): the point sphere is v9, f7
@@ -107,7 +108,7 @@ TEST_CASE("dual: holes, point spheres and edges with one face on both sides are 
 
 TEST_CASE("dual: through the editor, its undo and the log") {
   const Mesh in = test::mixed_polyhedron();
-  check_editor_and_log(in, "dual", {}, dual(dual(in)), build_mesh(grid_soup(2, 1)));
+  check_editor_and_log(in, "dual", {{"boundary", "hole"}}, dual(dual(in)), build_mesh(grid_soup(2, 1)));
 }
 
 #ifdef DLFL_TOOL
@@ -116,13 +117,15 @@ TEST_CASE("dual: through the editor, its undo and the log") {
 
 #include "tool_runner.h"
 
-TEST_CASE("dual: the tool refuses an open mesh with one error line naming the hole, and writes nothing") {
+TEST_CASE("dual: under boundary=hole the tool refuses an open mesh with one error line naming the hole") {
   const auto in = scratch("triangle.obj");
   std::ofstream(in) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
   const auto out = scratch("dual.obj");
-  const Run r = run("subdivide '" + in.string() + "' -s dual -o '" + out.string() + "'");
+  const Run r =
+      run("subdivide '" + in.string() + "' -s dual --param boundary=hole -o '" + out.string() + "'");
   CHECK(r.exit_code == 1);
-  CHECK(r.err == "error: dual: f1 is a hole: the dual of an open mesh is not defined\n");
+  CHECK(r.err ==
+        "error: dual: f1 is a hole: boundary=hole refuses open meshes (boundary=curve gives their dual)\n");
   CHECK_FALSE(std::filesystem::exists(out));
 }
 #endif

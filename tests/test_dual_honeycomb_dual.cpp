@@ -196,9 +196,12 @@ TEST_CASE("dual-honeycomb-dual: affine invariance") {
                           [](const Mesh& m) { return dual_honeycomb_dual(m); });
 }
 
-TEST_CASE("dual-honeycomb-dual: holes, point spheres and bad tensions are refused with the dual's names") {
-  CHECK(error_message<TopologyError>([] { dual_honeycomb_dual(build_mesh(grid_soup(2, 2))); }) ==
-        "dual-honeycomb-dual: dual: f4 is a hole: the dual of an open mesh is not defined");
+TEST_CASE("dual-honeycomb-dual: holes (boundary=hole), point spheres and bad tensions are refused, named") {
+  HoneycombParams hole;
+  hole.boundary.rule = BoundaryRule::hole;
+  CHECK(error_message<TopologyError>([&] { dual_honeycomb_dual(build_mesh(grid_soup(2, 2)), hole); }) ==
+        "dual-honeycomb-dual: dual: f4 is a hole: boundary=hole refuses open meshes (boundary=curve gives "
+        "their dual)");
   Mesh sphere = test::cube();
   sphere.create_vertex({5, 5, 5});
   CHECK(error_message<TopologyError>([&] { dual_honeycomb_dual(sphere); }) ==
@@ -225,7 +228,7 @@ TEST_CASE("dual-honeycomb-dual: through the editor, its undo and the log, with t
   HoneycombParams p;
   p.t = 0.4;
   p.a = 0.7;
-  check_editor_and_log(in, "dual-honeycomb-dual", {{"t", 0.4}, {"a", 0.7}},
+  check_editor_and_log(in, "dual-honeycomb-dual", {{"t", 0.4}, {"a", 0.7}, {"boundary", "hole"}},
                        dual_honeycomb_dual(dual_honeycomb_dual(in, p), p), build_mesh(grid_soup(2, 1)));
   // t's range needs no mesh: it is refused when the parameters are resolved, before any work.
   CHECK_THROWS_WITH_AS(resolve_scheme_params("dual-honeycomb-dual", {{"t", 2.0}}),

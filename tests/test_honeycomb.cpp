@@ -431,12 +431,14 @@ TEST_CASE("honeycomb: bad parameters throw InvalidArgument naming the parameter"
   CHECK_NOTHROW(check_honeycomb_params(Mesh(), HoneycombParams{}));
 }
 
-TEST_CASE("honeycomb: an open grid keeps its hole as a hole face") {
+TEST_CASE("honeycomb: under boundary=hole an open grid keeps its hole as a hole face") {
   // grid_soup(3, 2): V = 4 * 3 = 12, E = 3 * 3 + 4 * 2 = 17, F = 6 quads + 1 hole of 2 * (3 + 2) = 10 sides.
   const Mesh m = build_mesh(test::grid_soup(3, 2));
   REQUIRE(m.num_faces() == 7);
   REQUIRE(hole_sizes(m) == std::vector<std::uint32_t>{10});
-  const Mesh r = checked_step(m);  // checks V' = 34, E' = 51, F' = 19 and the hole's size and flag
+  HoneycombParams hole;
+  hole.boundary.rule = BoundaryRule::hole;
+  const Mesh r = checked_step(m, hole);  // checks V' = 34, E' = 51, F' = 19 and the hole's size and flag
   CHECK(r.num_vertices() == 34);
   CHECK(r.num_edges() == 51);
   CHECK(r.num_faces() == 19);
@@ -449,7 +451,7 @@ TEST_CASE("honeycomb: an open grid keeps its hole as a hole face") {
       CHECK((q.x > 0.0 && q.x < 3.0 && q.y > 0.0 && q.y < 2.0));
     }
   }
-  checked_step(r);
+  checked_step(r, hole);
 }
 
 TEST_CASE("honeycomb: point spheres are copied through") {

@@ -103,7 +103,7 @@ TEST_CASE(
   open.indices.resize(9);
   const Mesh in = build_mesh(open);
   REQUIRE(count_holes(in) == 1);
-  const Mesh out = loop(in, nullptr, {BoundaryRule::hole});
+  const Mesh out = loop(in, {BoundaryRule::hole});
   check_valid_same_genus(in, out);
   CHECK(out.num_faces() == 16);
   CHECK(count_holes(out) == 4);
@@ -145,7 +145,7 @@ TEST_CASE(
   // With boundary=hole, a hole of more than three corners: a triangulated grid's boundary loop. (The curve
   // rule takes it: tests/test_boundary_loop.cpp.)
   const Mesh grid = build_mesh(triangulated(grid_soup(2, 2)));
-  const std::string hole = error_message<TopologyError>([&] { loop(grid, nullptr, {BoundaryRule::hole}); });
+  const std::string hole = error_message<TopologyError>([&] { loop(grid, {BoundaryRule::hole}); });
   CHECK(hole.find("is a hole (a boundary loop) with 8 corners; Loop subdivision with boundary=hole needs "
                   "triangles, holes included (boundary=curve takes holes of any size)") != std::string::npos);
 

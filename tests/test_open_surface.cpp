@@ -90,18 +90,18 @@ TEST_CASE(
   // the hole's face point to its edge points lie between two hole quads: 22. Faces: 8 quads.
   // Check: 15 - 22 + 8 = 1, a disc. One boundary loop of 12 edges.
   const BoundaryOptions hole{BoundaryRule::hole};
-  const Mesh cc = catmull_clark(build_mesh(two_squares()), nullptr, hole);
+  const Mesh cc = catmull_clark(build_mesh(two_squares()), hole);
   CHECK(cc.num_vertices() == 16);
   CHECK(cc.num_edges() == 28);
   check_surface(cc, {15, 22, 8, 1});
   // Cylinder: 8 + 12 + 6 = 26 vertices, 2 inside holes: 24. Edges 24 + 24 = 48, 4 inside each hole: 40.
   // Faces 16. 24 - 40 + 16 = 0, an annulus with its two loops.
-  check_surface(catmull_clark(build_mesh(cylinder()), nullptr, hole), {24, 40, 16, 2});
+  check_surface(catmull_clark(build_mesh(cylinder()), hole), {24, 40, 16, 2});
   // A second step: every vertex of the hole region stays out, the loops stay two.
   // V: 26 + 48 + 24 = 98 in the mesh; the hole region of each loop is now 4 x 4 = 16 quads around ...
   // (counted from the surface side instead): surface faces 4 x 16 = 64; the surface is a 16 x 4 grid of quads
   // on a cylinder: 16 x 5 = 80 vertices, 16 x 4 + 16 x 5 = 144 edges; 80 - 144 + 64 = 0.
-  check_surface(catmull_clark(catmull_clark(build_mesh(cylinder()), nullptr, hole), nullptr, hole),
+  check_surface(catmull_clark(catmull_clark(build_mesh(cylinder()), hole), hole),
                 {80, 144, 64, 2});
 }
 
@@ -110,14 +110,14 @@ TEST_CASE(
   // V + E = 4 + 6 = 10, all on the surface (the hole's inner triangle has the hole's edge points as corners).
   // Edges 2E + 3F = 12 + 12 = 24, of which the inner triangle's 3 lie between hole faces: 21. Faces 4 x 3
   // = 12. 10 - 21 + 12 = 1, a disc.
-  const Mesh once = loop(build_mesh(open_tetrahedron()), nullptr, {BoundaryRule::hole});
+  const Mesh once = loop(build_mesh(open_tetrahedron()), {BoundaryRule::hole});
   CHECK(once.num_edges() == 24);
   check_surface(once, {10, 21, 12, 1});
 }
 
 TEST_CASE("open surface: a written catmull-clark step (boundary=hole) reads back without stray vertices") {
   const auto path = test::scratch("cc.obj");
-  write_mesh(catmull_clark(build_mesh(two_squares()), nullptr, {BoundaryRule::hole}), path);
+  write_mesh(catmull_clark(build_mesh(two_squares()), {BoundaryRule::hole}), path);
   const MeshStatistics s = statistics(read_mesh(path));
   CHECK(s.vertices == 15);
   CHECK(s.point_spheres == 0);

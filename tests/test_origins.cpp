@@ -308,7 +308,7 @@ Sizes sizes(const Mesh& m) { return {m.num_vertices(), m.num_edges(), m.num_face
 void check_catmull_clark(const Mesh& in) {
   Origins o;
   const Mesh out = checked_step(
-      in, [](const Mesh& m, Origins* origins) { return catmull_clark(m, origins, {BoundaryRule::hole}); }, o);
+      in, [](const Mesh& m, Origins* origins) { return catmull_clark(m, {BoundaryRule::hole}, origins); }, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {V, E, F, 0}, {0, 2 * E, 0, C}, {0, 0, 0, C});
   // Positions: face points at centroids, edge points (a + b + F0 + F1) / 4, vertex points (Q + 2R + (n-3)S) /
@@ -362,9 +362,13 @@ glm::dvec3 doo_sabin_point(const Mesh& in, CornerId c) {
   return p;
 }
 
+// Under boundary=hole, the rule these checks describe (on a closed mesh both rules agree).
+constexpr BoundaryOptions hole_rule{BoundaryRule::hole};
+
 void check_doo_sabin(const Mesh& in) {
   Origins o;
-  const Mesh out = checked_step(in, doo_sabin, o);
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return doo_sabin(m, hole_rule, origins); }, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {0, 0, 0, C}, {0, C, 0, C}, {V, E, F, 0});
   for (VertexId w : out.vertices())
@@ -467,6 +471,7 @@ void check_honeycomb(const Mesh& in) {
   HoneycombParams p;
   p.t = 0.3;
   p.a = 0.6;
+  p.boundary = hole_rule;
   Origins o;
   const Mesh out = honeycomb(in, p, &o);
   CHECK(out == honeycomb(in, p));
@@ -477,7 +482,9 @@ void check_honeycomb(const Mesh& in) {
   }
   // Zhang-Wang has the honeycomb's topology and handles, so the same origins.
   Origins zw;
-  const Mesh z = zhang_wang_honeycomb(in, {}, &zw);
+  ZhangWangParams zp;
+  zp.boundary = hole_rule;
+  const Mesh z = zhang_wang_honeycomb(in, zp, &zw);
   CHECK(zw.vertices == o.vertices);
   CHECK(zw.edges == o.edges);
   CHECK(zw.faces == o.faces);
@@ -707,7 +714,8 @@ void check_open_sqrt3(const Mesh& in, bool trisected) {
 
 void check_dual(const Mesh& in) {
   Origins o;
-  const Mesh out = checked_step(in, dual, o);
+  const Mesh out = checked_step(
+      in, [](const Mesh& m, Origins* origins) { return dual(m, origins); }, o);
   const auto [V, E, F, C] = sizes(in);
   check_counts(o, {0, 0, F, 0}, {0, E, 0, 0}, {V, 0, 0, 0});
   for (VertexId w : out.vertices()) CHECK(close(out.position(w), centroid_of(in, o.of(w).face()), 1e-12));
@@ -1053,6 +1061,55 @@ TEST_CASE("origins: mlca on quads, on a mixed mesh (split first) and with a poin
   CHECK(o.of(last) == origin_of(p));
   CHECK(o.of(out.face(out.corner(last))) == origin_of(p));
   CHECK(out.position(last) == glm::dvec3(5, 5, 5));
+}
+
+TEST_CASE("origins: the boundary rules of doo-sabin, the honeycombs, dual and dual-honeycomb-dual") {
+  // A grid with a hole (corners of two edges, kept) and a tube with a marked vertex: every element has its
+  // origin, and the boundary points stem from what the headers say, where the rules put them.
+  Mesh tube = build_mesh(test::open_tube_soup(8, 3));
+  tube.add_vertex_attribute<bool>(sharp_vertex_attribute, false)[VertexId(2)] = true;
+  for (const Mesh& in : {build_mesh(test::grid_with_holes(4, 3, {{1, 1}})), tube}) {
+    for (const std::string name : {"doo-sabin", "honeycomb", "honeycomb-zw", "dual", "dual-honeycomb-dual"}) {
+      CAPTURE(name);
+      Origins o;
+      const Mesh out = apply_scheme(in, name, {}, &o);
+      check_well_formed(in, out, o);
+      CHECK(apply_scheme(in, name) == out);
+      const bool doo_sabin = name == std::string("doo-sabin"), honeycombs = name.rfind("honeycomb", 0) == 0;
+      if (!doo_sabin && !honeycombs) continue;
+      for (FaceId f : out.faces()) {
+        if (!out.is_hole(f)) continue;
+        for (CornerId c : out.corners(f)) {
+          const glm::dvec3 q = out.position(out.vertex(c));
+          const Origin src = o.of(out.vertex(c));
+          if (src.kind == Kind::vertex) {  // a honeycomb's vertex point: itself (sharp) or v/2 + (u + w)/4
+            REQUIRE(honeycombs);
+            const VertexId v = src.vertex();
+            CHECK(out.valence(out.vertex(c)) == 2);
+            bool found = false;
+            for (CornerId h : in.corners(v)) {
+              if (!in.is_hole(in.face(h))) continue;
+              const glm::dvec3 u = in.position(in.vertex(in.prev(h))), w = in.position(in.vertex(in.next(h)));
+              found = found || q == in.position(v) || q == 0.5 * in.position(v) + 0.25 * (u + w);
+            }
+            CHECK(found);
+            continue;
+          }
+          REQUIRE(src.kind == Kind::corner);
+          const CornerId h = src.corner();
+          REQUIRE(in.is_hole(in.face(h)));
+          const glm::dvec3 a = in.position(in.vertex(h)), b = in.position(in.vertex(in.next(h))),
+                           z = in.position(in.vertex(in.prev(h)));
+          if (honeycombs) {
+            CHECK(q == 0.5 * (a + b));  // the midpoint of the hole corner's edge
+          } else {  // Chaikin's points near a on its two boundary edges (or a, or a midpoint, at sharp ends)
+            const bool chaikin = close(q, 0.75 * a + 0.25 * b, 1e-15) || close(q, 0.75 * a + 0.25 * z, 1e-15);
+            CHECK((chaikin || q == a || q == 0.5 * (a + b) || q == 0.5 * (a + z)));
+          }
+        }
+      }
+    }
+  }
 }
 
 TEST_CASE("origins: through the registry, for every scheme") {

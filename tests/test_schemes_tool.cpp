@@ -34,8 +34,8 @@ TEST_CASE("schemes tool: the listing shows every scheme with its doc and each pa
     CHECK(r.out.find(s.name + ": " + s.doc + "\n") != std::string::npos);
   }
   // One line per parameter: name, type, default, range or keywords, doc.
-  CHECK(r.out.find("  t   number  default 0.5") != std::string::npos);
-  CHECK(r.out.find("in [0, 1]  where each edge's point lies") != std::string::npos);
+  CHECK(r.out.find("  t              number   default 0.5") != std::string::npos);
+  CHECK(r.out.find("in [0, 1]               where each edge's point lies") != std::string::npos);
   CHECK(r.out.find("optional: a0 + a1/N for an N-sided face  in (0, 1)") != std::string::npos);
   CHECK(r.out.find("default 'symmetric'") != std::string::npos);
   CHECK(r.out.find("in [0, 1] or 'symmetric'") != std::string::npos);
@@ -48,7 +48,7 @@ TEST_CASE("schemes tool: NAME shows that scheme only") {
   Run r = run("schemes honeycomb");
   REQUIRE(r.exit_code == 0);
   CHECK(r.out.rfind("honeycomb: Akleman-Srinivasan honeycomb", 0) == 0);
-  CHECK(r.out.find("  a1  number  default 1.25") != std::string::npos);
+  CHECK(r.out.find("  a1             number   default 1.25") != std::string::npos);
   CHECK(r.out.find("catmull-clark") == std::string::npos);
   CHECK(r.out.find("honeycomb-zw") == std::string::npos);
   Run none = run("schemes mlca");

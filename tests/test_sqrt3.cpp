@@ -133,7 +133,7 @@ TEST_CASE(
   open.offsets.pop_back();
   open.indices.resize(9);
   CHECK(
-      error_message<TopologyError>([&] { sqrt3(build_mesh(open), nullptr, {BoundaryRule::hole}); }) ==
+      error_message<TopologyError>([&] { sqrt3(build_mesh(open), {BoundaryRule::hole}); }) ==
       "sqrt3: f3 is a hole (a boundary loop) with 3 corners; sqrt(3) subdivision with boundary=hole needs a "
       "closed triangle mesh (boundary=curve takes open meshes)");
 

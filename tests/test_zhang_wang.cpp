@@ -389,12 +389,19 @@ TEST_CASE("zhang-wang: affine maps commute with the subdivision") {
 }
 
 TEST_CASE("zhang-wang: hole faces stay holes and point spheres are copied") {
+  // The grid's hole of 10 corners: under boundary=hole a hole of 10 again, under curve (formula (15)) of 20.
   Mesh grid = build_mesh(test::grid_soup(3, 2));
-  const Mesh r = zhang_wang_honeycomb(grid);
-  require_valid(r);
-  std::size_t holes = 0;
-  for (FaceId f : r.faces()) holes += r.is_hole(f);
-  CHECK(holes == 1);
+  for (const BoundaryRule rule : {BoundaryRule::curve, BoundaryRule::hole}) {
+    ZhangWangParams p;
+    p.boundary.rule = rule;
+    const Mesh r = zhang_wang_honeycomb(grid, p);
+    require_valid(r);
+    std::vector<std::uint32_t> holes;
+    for (FaceId f : r.faces()) {
+      if (r.is_hole(f)) holes.push_back(r.size(f));
+    }
+    CHECK(holes == std::vector<std::uint32_t>{rule == BoundaryRule::curve ? 20u : 10u});
+  }
   Mesh with_point = test::cube();
   with_point.create_vertex({5, 5, 5});
   const Mesh rp = zhang_wang_honeycomb(with_point);

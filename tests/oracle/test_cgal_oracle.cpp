@@ -169,7 +169,7 @@ TEST_CASE("oracle: catmull-clark agrees with CGAL on open meshes (boundary=curve
   // border stays one loop of twice the edges. Our curve rule, corners included (sharp_corners = false).
   // The surface polygons count as in the closed case: 4 per surface corner after two steps.
   check_two_steps_agree(
-      open_polygon_meshes(), [](const Mesh& m) { return catmull_clark(m, nullptr, cgal_boundary); },
+      open_polygon_meshes(), [](const Mesh& m) { return catmull_clark(m, cgal_boundary); },
       [](SurfaceMesh& sm, auto iterations) {
         CGAL::Subdivision_method_3::CatmullClark_subdivision(sm, iterations);
       },
@@ -180,7 +180,7 @@ TEST_CASE("oracle: loop agrees with CGAL on open triangle meshes (boundary=curve
   // Loop_mask_3::border_node is the same pair of rules (midpoint, (u + 6 v + w) / 8), used by PTQ_1step for
   // every border edge and vertex.
   check_two_steps_agree(
-      open_triangle_meshes(), [](const Mesh& m) { return loop(m, nullptr, cgal_boundary); },
+      open_triangle_meshes(), [](const Mesh& m) { return loop(m, cgal_boundary); },
       [](SurfaceMesh& sm, auto iterations) { CGAL::Subdivision_method_3::Loop_subdivision(sm, iterations); },
       [](const PolygonSoup& soup) { return 16 * soup.num_faces(); });
 }
@@ -193,7 +193,7 @@ TEST_CASE("oracle: sqrt3 agrees with CGAL on open triangle meshes over pairs of 
   // the edge is cut into three from its third vertex, and the other old edges are flipped. Ours, with the
   // parity carried from step to step by the sqrt3_trisect mark; compared after 2 and 4 steps (9 and 81 F).
   check_two_steps_agree(
-      open_triangle_meshes(), [](const Mesh& m) { return sqrt3(m, nullptr, cgal_boundary); },
+      open_triangle_meshes(), [](const Mesh& m) { return sqrt3(m, cgal_boundary); },
       [](SurfaceMesh& sm, auto iterations) { CGAL::Subdivision_method_3::Sqrt3_subdivision(sm, iterations); },
       [](const PolygonSoup& soup) { return 9 * soup.num_faces(); });
   for (const PolygonSoup& soup : open_triangle_meshes()) {
@@ -201,7 +201,7 @@ TEST_CASE("oracle: sqrt3 agrees with CGAL on open triangle meshes over pairs of 
     SurfaceMesh sm = to_cgal(soup);
     CGAL::Subdivision_method_3::Sqrt3_subdivision(sm, CGAL::parameters::number_of_iterations(4));
     Mesh ours = build_mesh(soup);
-    for (int step = 0; step < 4; ++step) ours = sqrt3(ours, nullptr, cgal_boundary);
+    for (int step = 0; step < 4; ++step) ours = sqrt3(ours, cgal_boundary);
     CHECK(ours.num_surface_faces() == 81 * soup.num_faces());
     require_same(to_polygons(ours), from_cgal(sm));
   }

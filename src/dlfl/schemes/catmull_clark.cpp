@@ -51,7 +51,9 @@ void open_quad_origins(const Mesh& m, const Mesh& result, const detail::OpenLayo
 
 }  // namespace
 
-Mesh catmull_clark(const Mesh& input, Origins* origins, const BoundaryOptions& boundary) {
+Mesh catmull_clark(const Mesh& input, Origins* origins) { return catmull_clark(input, BoundaryOptions{}, origins); }
+
+Mesh catmull_clark(const Mesh& input, const BoundaryOptions& boundary, Origins* origins) {
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
   const auto [nv, ne, nf, nc] = dense_counts(m);
@@ -61,7 +63,7 @@ Mesh catmull_clark(const Mesh& input, Origins* origins, const BoundaryOptions& b
     }
   }
   const bool curve = boundary.rule == BoundaryRule::curve;
-  const auto marks = curve ? detail::sharp_marks(m) : std::nullopt;
+  const auto marks = curve ? detail::sharp_marks(m, "catmull-clark") : std::nullopt;
   // The curve rule on an open mesh: hole faces get no face point and stay whole.
   std::optional<detail::BoundaryVertices> open;
   std::optional<detail::OpenLayout> layout;

@@ -46,6 +46,9 @@ namespace dlfl {
 ///
 /// The registered scheme's counts (V + E + F, 4E, 2E from V, E, F with holes counted as faces) are exact on
 /// closed meshes and under `hole`, and bound the curve rule's from above (F + H >= F, C <= 2E).
-Mesh catmull_clark(const Mesh& mesh, Origins* origins = nullptr, const BoundaryOptions& boundary = {});
+Mesh catmull_clark(const Mesh& mesh, const BoundaryOptions& boundary, Origins* origins = nullptr);
+
+/// The same with the default boundary options (`curve`, sharp corners kept).
+Mesh catmull_clark(const Mesh& mesh, Origins* origins = nullptr);
 
 }  // namespace dlfl

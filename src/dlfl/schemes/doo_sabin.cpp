@@ -1,5 +1,6 @@
 #include <dlfl/schemes/doo_sabin.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <numbers>
@@ -9,6 +10,7 @@
 #include <dlfl/dense_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
+#include <dlfl/schemes/detail/boundary_points.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 #include <dlfl/schemes/detail/vertex_faces.h>
@@ -80,35 +82,94 @@ void face_points(const glm::dvec3* v, glm::dvec3* p, std::uint32_t n, WeightTabl
 
 }  // namespace
 
-Mesh doo_sabin(const Mesh& input, Origins* origins) {
+Mesh doo_sabin(const Mesh& input, Origins* origins) { return doo_sabin(input, BoundaryOptions{}, origins); }
+
+Mesh doo_sabin(const Mesh& input, const BoundaryOptions& boundary, Origins* origins) {
   std::optional<Mesh> storage;
   const Mesh& m = dense_mesh(input, storage);  // handles 0 .. count-1
   const auto [nv, ne, nf, nc] = dense_counts(m);
 
-  // Output corners: F-faces take 0 .. nc-1 (face by face), E-face e takes e_base + 4e .. + 3, V-faces take
-  // v_base .. (vertex by vertex). slot[c] / vslot[c] is the output corner for input corner c in its F-face /
-  // V-face.
-  const std::uint32_t e_base = nc, v_base = nc + 4 * ne;
+  // The boundary rule (curve, on a mesh with holes): a hole corner h gets two points, out(h) on its own edge
+  // and in(h) on edge(prev(h)), both near vertex(h); at a sharp vertex they are one point, the vertex itself.
+  // `in_point[c]` is the output vertex of the point of c that edge(prev(c)) leads to: c itself, but for a
+  // split hole corner, whose in-point is numbered after the nc corner points.
+  const bool curve = boundary.rule == BoundaryRule::curve && detail::has_hole(m);
+  std::vector<bool> sharp, hole_corner, dissolved;
+  std::vector<std::uint32_t> in_point;
+  std::uint32_t nvert = nc;
+  if (curve) {
+    sharp = detail::sharp_boundary_vertices(m, boundary, "doo-sabin");
+    hole_corner.assign(nc, false);
+    dissolved.assign(nv, false);
+    in_point.resize(nc);
+    for (std::uint32_t k = 0; k < nc; ++k) {
+      hole_corner[k] = m.is_hole(m.face(CornerId(k)));
+      const bool split = hole_corner[k] && !sharp[m.vertex(CornerId(k)).index()];
+      in_point[k] = split ? nvert++ : k;
+    }
+    // A sharp corner with one face: its V-face would be the 2-gon of its face's point and the kept vertex,
+    // so it is left out and the two E-faces beside it share that edge.
+    for (std::uint32_t v = 0; v < nv; ++v) {
+      const CornerId c = m.corner(VertexId(v));
+      const CornerId d = m.prev_around_vertex(c);
+      dissolved[v] = sharp[v] && m.prev_around_vertex(d) == c && c != d &&
+                     hole_corner[c.index()] != hole_corner[d.index()];
+    }
+  }
+  const auto split = [&](std::uint32_t k) {
+    return curve && hole_corner[k] && !sharp[m.vertex(CornerId(k)).index()];
+  };
+  const auto in_of = [&](std::uint32_t k) { return curve ? in_point[k] : k; };
+
+  // Output corners: F-faces first (face by face; a split hole corner takes two, in(h) then out(h)), then
+  // E-face e at e_base + 4e .. + 3, then V-faces (vertex by vertex; a split hole corner takes two, out(h)
+  // then in(h)). slot[c] is the F-face corner leaving the point of c along edge(c); in_slot[c] that of in(c).
+  // vslot[c] is c's first V-face corner; the one leaving towards the next corner around the vertex, across
+  // edge(prev(c)), is vslot[c] + 1 for a split hole corner and vslot[c] otherwise.
   std::vector<std::uint32_t> offsets(std::size_t(nf) + ne + nv + 1);
-  std::vector<std::uint32_t> slot(nc), vslot(nc);
+  std::vector<std::uint32_t> slot(nc), vslot(nc), in_slot(curve ? nc : 0);
   std::uint32_t next_slot = 0;
   for (std::uint32_t f = 0; f < nf; ++f) {
     offsets[f] = next_slot;
-    for (CornerId c : m.corners(FaceId(f))) slot[c.index()] = next_slot++;
+    for (CornerId c : m.corners(FaceId(f))) {
+      if (split(c.index())) in_slot[c.index()] = next_slot++;
+      slot[c.index()] = next_slot++;
+    }
   }
+  const std::uint32_t e_base = next_slot, v_base = e_base + 4 * ne;
   for (std::uint32_t e = 0; e < ne; ++e) offsets[nf + e] = e_base + 4 * e;
-  // V-faces counter-clockwise around v, oriented like the input; they end at 2 nc + 4 ne = 4 nc.
+  // V-faces counter-clockwise around v, oriented like the input.
   detail::number_vertex_face_corners(m, input, "doo-sabin", v_base, std::span(offsets).subspan(nf + ne),
-                                     vslot, true);
+                                     vslot, true, [&](CornerId c) -> std::uint32_t {
+                                       if (!curve) return 1;
+                                       if (dissolved[m.vertex(c).index()]) return 0;
+                                       return split(c.index()) ? 2 : 1;
+                                     });
+  const auto vin = [&](std::uint32_t k) { return vslot[k] + (split(k) ? 1 : 0); };
 
-  MeshAssembler out(nc, offsets);
+  // Faces of dissolved V-faces are left out of the offsets (they would be empty).
+  std::vector<std::uint32_t> face_of_vertex;  // output face of each V-face, when some are dissolved
+  if (curve && std::find(dissolved.begin(), dissolved.end(), true) != dissolved.end()) {
+    face_of_vertex.resize(nv);
+    std::uint32_t w = nf + ne;
+    for (std::uint32_t v = 0; v < nv; ++v) {
+      face_of_vertex[v] = dissolved[v] ? ~0u : w;
+      if (!dissolved[v]) offsets[w++] = offsets[nf + ne + v];
+    }
+    offsets[w] = offsets[nf + ne + nv];
+    offsets.resize(std::size_t(w) + 1);
+  }
 
-  // Points: output vertex k is the point of input corner k, computed in its face.
+  MeshAssembler out(nvert, offsets);
+
+  // Points: output vertex k is the point of input corner k, computed in its face (for a hole under the
+  // boundary rule: out(k)); the in-points of split hole corners follow.
   {
     WeightTable table;
     std::vector<glm::dvec3> v, p;
     std::vector<double> trig;
     for (std::uint32_t f = 0; f < nf; ++f) {
+      if (curve && m.is_hole(FaceId(f))) continue;
       const std::uint32_t n = m.size(FaceId(f));
       v.resize(n);
       p.resize(n);
@@ -117,6 +178,22 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
       face_points(v.data(), p.data(), n, table, trig);
       i = 0;
       for (CornerId c : m.corners(FaceId(f))) out.set_position(c.index(), p[i++]);
+    }
+  }
+  std::vector<std::uint32_t> kept;  // output vertices at sharp vertices, marked in the result
+  if (curve) {
+    // Chaikin along the boundary (clamped at sharp vertices): only the boundary polygon is read.
+    for (std::uint32_t k = 0; k < nc; ++k) {
+      if (!hole_corner[k]) continue;
+      const CornerId h(k);
+      const VertexId a = m.vertex(h), b = m.vertex(m.next(h)), z = m.vertex(m.prev(h));
+      const glm::dvec3 pa = m.position(a);
+      out.set_position(k, detail::chaikin_point(pa, m.position(b), sharp[a.index()], sharp[b.index()]));
+      if (in_point[k] != k) {
+        out.set_position(in_point[k], detail::chaikin_point(pa, m.position(z), false, sharp[z.index()]));
+      } else {
+        kept.push_back(k);
+      }
     }
   }
 
@@ -136,46 +213,77 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
   // side-0 corner, it is g's c0, B = v and c = next(c0), d = c1: the E-face side P(c1) -> P(next(c0)) is E2.
   // If prev(c) is the side-1 corner, it is c1, A = v, c = next(c1), d = c0: the side P(c0) -> P(next(c1)) is
   // E0. Conversely E0 pairs with the V-face corner of next(c1), and E2 with that of next(c0).
+  //
+  // Boundary rule: on a hole's side the points near A and B on e are in(next(c1)) and out(c1) (c1 the hole
+  // corner), so the E-face reads P(next(c)) as the in-point of next(c). A split hole corner h adds the side
+  // in(h) -> out(h) to its F-face and out(h) -> in(h) to the V-face (twins). A dissolved V-face's two
+  // neighbouring E-face sides become twins of each other.
+  const auto e_side_of_vin = [&](CornerId c) {  // the E-face side that c's V-face corner pairs with
+    const CornerId p = m.prev(c);
+    const EdgeId g = m.edge(p);
+    return e_base + 4 * g.index() + (m.corner(g, 0) == p ? 2 : 0);
+  };
+  const auto v_twin = [&](CornerId n) {  // the twin of the E-face side that crosses to n's V-face corner
+    if (curve && dissolved[m.vertex(n).index()]) return e_side_of_vin(m.prev_around_vertex(n));
+    return vin(n.index());
+  };
   for (std::uint32_t k = 0; k < nc; ++k) {
     const CornerId c(k);
     const EdgeId e = m.edge(c);
     out.set_corner(slot[k], k, e_base + 4 * e.index() + (m.corner(e, 0) == c ? 3 : 1));
-    const CornerId p = m.prev(c);
-    const EdgeId g = m.edge(p);
-    out.set_corner(vslot[k], k, e_base + 4 * g.index() + (m.corner(g, 0) == p ? 2 : 0));
+    if (split(k)) {
+      out.set_corner(in_slot[k], in_point[k], vslot[k]);
+      out.set_corner(vslot[k], k, in_slot[k]);
+    }
+    if (!curve || !dissolved[m.vertex(c).index()]) out.set_corner(vin(k), in_of(k), e_side_of_vin(c));
   }
   for (std::uint32_t e = 0; e < ne; ++e) {
     const CornerId c0 = m.corner(EdgeId(e), 0), c1 = m.corner(EdgeId(e), 1);
     const CornerId n0 = m.next(c0), n1 = m.next(c1);
     const std::uint32_t q = e_base + 4 * e;
-    out.set_corner(q + 0, c0.index(), vslot[n1.index()]);
-    out.set_corner(q + 1, n1.index(), slot[c1.index()]);
-    out.set_corner(q + 2, c1.index(), vslot[n0.index()]);
-    out.set_corner(q + 3, n0.index(), slot[c0.index()]);
+    out.set_corner(q + 0, c0.index(), v_twin(n1));
+    out.set_corner(q + 1, in_of(n1.index()), slot[c1.index()]);
+    out.set_corner(q + 2, c1.index(), v_twin(n0));
+    out.set_corner(q + 3, in_of(n0.index()), slot[c0.index()]);
   }
   for (std::uint32_t f = 0; f < nf; ++f) {
     if (m.is_hole(FaceId(f))) out.set_hole(f, true);
   }
   Mesh result = out.finish();
+  detail::mark_sharp(result, kept);
   if (origins) {
     const detail::InputHandles in(input);
     detail::reset_origins(*origins, result);
-    for (std::uint32_t k = 0; k < nc; ++k) origins->vertices[k] = in.corner(k);
+    for (std::uint32_t k = 0; k < nc; ++k) {
+      origins->vertices[k] = in.corner(k);
+      if (in_of(k) != k) origins->vertices[in_of(k)] = in.corner(k);
+    }
     for (std::uint32_t f = 0; f < nf; ++f) origins->faces[f] = in.face(f);
     for (std::uint32_t e = 0; e < ne; ++e) origins->faces[nf + e] = in.edge(e);
-    for (std::uint32_t v = 0; v < nv; ++v) origins->faces[nf + ne + v] = in.vertex(v);
-    // The edge leaving each output corner: along an F-face, the side of its corner; around a V-face, the old
-    // edge it crosses (see the twins above: E0 and E2 pair with V-faces, E1 and E3 with F-faces).
-    std::vector<Origin> edge_of(4 * std::size_t(nc));
-    for (std::uint32_t k = 0; k < nc; ++k) {
-      edge_of[slot[k]] = in.corner(k);
-      edge_of[vslot[k]] = in.edge(m.edge(m.prev(CornerId(k))).index());
+    for (std::uint32_t v = 0; v < nv; ++v) {
+      const std::uint32_t face = face_of_vertex.empty() ? nf + ne + v : face_of_vertex[v];
+      if (face != ~0u) origins->faces[face] = in.vertex(v);
     }
+    // The edge leaving each output corner: along an F-face, the side of its corner; around a V-face, the old
+    // edge it crosses (see the twins above: E0 and E2 pair with V-faces, E1 and E3 with F-faces). The side
+    // in(h) -> out(h) cutting off a hole's corner stems from that corner; the edge a dissolved V-face leaves
+    // between its face's point and the kept vertex stems from its face's corner.
+    std::vector<Origin> edge_of(result.num_corners());
     for (std::uint32_t e = 0; e < ne; ++e) {
       const std::uint32_t q = e_base + 4 * e;
       edge_of[q + 0] = edge_of[q + 2] = in.edge(e);
       edge_of[q + 1] = in.corner(m.corner(EdgeId(e), 1).index());
       edge_of[q + 3] = in.corner(m.corner(EdgeId(e), 0).index());
+    }
+    for (std::uint32_t k = 0; k < nc; ++k) {
+      const CornerId c(k);
+      edge_of[slot[k]] = in.corner(k);
+      if (split(k)) edge_of[in_slot[k]] = edge_of[vslot[k]] = in.corner(k);
+      if (!curve || !dissolved[m.vertex(c).index()]) {
+        edge_of[vin(k)] = in.edge(m.edge(m.prev(c)).index());
+      } else if (!hole_corner[k]) {
+        edge_of[e_side_of_vin(c)] = edge_of[e_side_of_vin(m.prev_around_vertex(c))] = in.corner(k);
+      }
     }
     detail::set_edge_origins(*origins, result, edge_of);
   }
@@ -185,10 +293,10 @@ Mesh doo_sabin(const Mesh& input, Origins* origins) {
 namespace detail {
 
 SchemeSpec doo_sabin_scheme() {
-  return parameterless_scheme(
+  return boundary_scheme(
       doo_sabin, "doo-sabin",
       "Doo-Sabin: a point per corner; faces for every face, edge and vertex; every new vertex 4-valent",
-      [](const MeshCounts& c) {  // V' = C = 2E, E' = 2C = 4E, F' = V + E + F
+      [](const MeshCounts& c) {  // V' = C = 2E, E' = 2C = 4E, F' = V + E + F (closed, or boundary=hole)
         return MeshCounts{2 * c.edges, 4 * c.edges, c.vertices + c.edges + c.faces};
       });
 }

@@ -2,6 +2,7 @@
 // Doo-Sabin subdivision on any polygon mesh.
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/boundary_rule.h>
 #include <dlfl/schemes/origins.h>
 
 namespace dlfl {
@@ -27,12 +28,35 @@ namespace dlfl {
 ///   (c0, next(c1), c1, next(c0)) with c0, c1 its side-0 and side-1 corners; the V-face of v starts at the
 ///   point of corner(v) and continues along prev_around_vertex (counter-clockwise).
 ///
-/// 2-gons are fine (n = 2: alpha = 7/8, 1/8), and so are vertices of valence 2 (their V-faces are 2-gons).
+/// 2-gons are fine (n = 2: alpha = 7/8, 1/8), and so are inner vertices of valence 2 (their V-faces are
+/// 2-gons).
 ///
-/// Hole faces (boundary loops of an open mesh) are treated as faces: the boundary is smoothed as if the hole
-/// were capped by a face, so its new points are pulled towards the hole's centroid. The F-face of a hole is
-/// flagged as a hole again; its E-faces and V-faces are ordinary faces. The result is an open mesh with as
-/// many boundary loops as the input, each with as many corners as before.
+/// Open meshes (hole faces, one per boundary loop), by `boundary.rule`:
+/// - `curve` (the default): Chaikin's rule along the boundary polygon. A hole corner h at vertex a, between
+///   the boundary edges from z to a and from a to b (hole order), gets two points instead of one:
+///   out(h) = 3/4 a + 1/4 b on its own edge and in(h) = 3/4 a + 1/4 z on the edge before, both on the
+///   boundary; they replace the hole's points in the E-faces of the boundary edges and in the V-face of a
+///   (which thus has two corners for the hole's one), and the hole's F-face, still a hole, runs
+///   in(h_0), out(h_0), in(h_1), ... So the boundary of the result depends only on the boundary polygon, and
+///   it is Chaikin's refinement of it: its limit is the uniform quadratic B-spline of the boundary polygon,
+///   which passes through the midpoint of every boundary edge (tangent to the edge) and through
+///   (z + 6 a + b) / 8 next to each vertex a (docs/boundaries.md derives it). The faces inside are the usual
+///   F-faces of their corners. A sharp boundary vertex (marked `sharp`, or with exactly two edges when
+///   `boundary.sharp_corners`; see BoundaryOptions) keeps its place: both points of its hole corner are the
+///   vertex itself (one output vertex), and the points next to it on its two edges are the edge midpoints,
+///   which is the clamped quadratic B-spline (Bezier at both ends) of each chain of the boundary between
+///   sharp vertices. A sharp corner with one face would get a 2-gon V-face (its face's point and the kept
+///   vertex); that V-face is left out, so the kept vertex has three edges and no 2-gon is made; the kept
+///   vertex is marked `sharp` in the result, so it stays in place over later steps.
+///   Counts: with H hole corners, S of them at sharp vertices and K dissolved V-faces, V' = 2E + H - S,
+///   E' = 4E + H - S - K, F' = V + E + F - K; the hole F-face of a hole of n corners, s of them sharp, has
+///   2n - s corners. Handles: as below, the in-points of the split hole corners numbered after the nc corner
+///   points in corner order, and V-faces that are left out take no face handle (those after them shift).
+/// - `hole` (the behaviour before boundary rules): hole faces are treated as faces: the boundary is smoothed
+///   as if the hole were capped by a face, so its new points are pulled towards the hole's centroid. The
+///   F-face of a hole is flagged as a hole again; its E-faces and V-faces are ordinary faces. The result is
+///   an open mesh with as many boundary loops as the input, each with as many corners as before.
+/// On a closed mesh both give the same result, bit for bit.
 ///
 /// Throws TopologyError, naming the vertex, for a point sphere (a vertex with no edge has no face to put a
 /// point in) and for a vertex of valence 1 (its V-face would have one corner and an edge from a point to
@@ -41,9 +65,13 @@ namespace dlfl {
 /// Origins (filled when `origins` is given; handles of `mesh` itself): the point of corner c <- c; an F-face
 /// <- its face, an E-face <- its edge, a V-face <- its vertex; an F-face's side from the point of c to the
 /// point of next(c) (along edge(c), inside face(c)) <- c; a V-face's side, which crosses an old edge near one
-/// of its ends, <- that edge (each edge is crossed twice, once at each end). By kind: vertices C from
-/// corners; faces F, E, V from faces, edges, vertices; edges C from corners, C = 2E from edges. Costs
-/// nothing when not asked for.
+/// of its ends, <- that edge (each edge is crossed twice, once at each end). Under `curve`: both points of a
+/// hole corner <- that corner; the side in(h) -> out(h) <- h; the edge between a face's point and a kept
+/// corner whose V-face is left out <- the face's corner there. By kind: vertices C from corners; faces F, E,
+/// V from faces, edges, vertices; edges C from corners, C = 2E from edges. Costs nothing when not asked for.
+Mesh doo_sabin(const Mesh& mesh, const BoundaryOptions& boundary, Origins* origins = nullptr);
+
+/// The same with the default boundary options (`curve`, sharp corners kept).
 Mesh doo_sabin(const Mesh& mesh, Origins* origins = nullptr);
 
 }  // namespace dlfl

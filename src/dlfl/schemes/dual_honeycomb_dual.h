@@ -9,11 +9,11 @@ namespace dlfl {
 /// One root-3 step as dual(honeycomb(dual(mesh), p)), the way the DLFL literature derives it from the
 /// honeycomb scheme. The input is not modified.
 ///
-/// Topology. Let the input have V vertices, E edges, F faces and C = 2E corners. Its dual D has F vertices,
-/// E edges and V faces (face v of D has valence(v) sides, vertex f of D has valence size(f)). The honeycomb
-/// step H of D has 2E vertices, all 3-valent, 3E edges, and F + V faces: a front face of valence(v) sides per
-/// face of D (per input vertex v) and a face of 2 size(f) sides per vertex of D (per input face f). The final
-/// dual therefore has
+/// Topology (closed meshes; the boundary rules add points along the boundary). Let the input have V vertices,
+/// E edges, F faces and C = 2E corners. Its dual D has F vertices, E edges and V faces (face v of D has
+/// valence(v) sides, vertex f of D has valence size(f)). The honeycomb step H of D has 2E vertices, all
+/// 3-valent, 3E edges, and F + V faces: a front face of valence(v) sides per face of D (per input vertex v)
+/// and a face of 2 size(f) sides per vertex of D (per input face f). The final dual therefore has
 ///   V' = V + F,  E' = 3E,  F' = 2E (= C), every face a triangle (H is 3-valent),
 /// with a vertex per input vertex keeping its valence and a vertex per input face f of valence 2 size(f).
 /// Its edges are: one between each input vertex and each face it bounds (one per corner, 2E of them, the
@@ -35,11 +35,22 @@ namespace dlfl {
 /// vertex of the face opposite v sits at -a v / 9 with the honeycomb tension a of a triangle (sqrt(3):
 /// -v / 3). Unlike sqrt(3), this works on any polygon mesh (always giving triangles).
 ///
+/// Open meshes, by `p.boundary.rule`:
+/// - `curve` (the default): the three steps with their boundary rules (see `dual` and `honeycomb`). The first
+///   dual keeps and marks the sharp boundary vertices (two edges with `sharp_corners`, or marked `sharp`);
+///   the honeycomb and the second dual then keep the marked ones only, since the honeycomb leaves every other
+///   boundary vertex with two edges. One step maps the boundary polygon p to the points
+///   (p_{i-1} + 5 p_i + 7 p_{i+1} + 3 p_{i+2}) / 16 and (3 p_i + 7 p_{i+1} + 5 p_{i+2} + p_{i+3}) / 16
+///   (between sharp vertices), which depend on the boundary polygon alone; their limit is the uniform quartic
+///   B-spline whose control points are the twice-midpointed polygon (p_{i-1} + 2 p_i + p_{i+1}) / 4
+///   (docs/boundaries.md). Counts: those of the three steps in turn (each header's closed forms).
+/// - `hole`: refused by the first dual, as before.
+///
 /// Handles: those of dual(honeycomb(dual(mesh), p)) (see `dual` and `honeycomb`; the honeycomb's tombstones
 /// are compacted away by the second dual), so deterministic.
 ///
 /// Errors: TopologyError (from the first dual, prefixed "dual-honeycomb-dual: ") for point spheres, hole
-/// faces (open meshes have no dual, so no root-3 step here) and edges with the same face on both sides.
+/// faces under `boundary = hole` and edges with the same face on both sides.
 /// InvalidArgument for honeycomb parameters that do not fit the dual's faces (see `check_honeycomb_params`):
 /// the dual's N-sided faces are the input's N-valent vertices, so with the default tension a vertex of
 /// valence 2 (a = 1.075) is rejected.

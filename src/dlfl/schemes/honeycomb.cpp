@@ -11,6 +11,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/format.h>
+#include <dlfl/schemes/detail/boundary_params.h>
 #include <dlfl/schemes/detail/honeycomb_params.h>
 #include <dlfl/schemes/detail/honeycomb_remesh.h>
 #include <dlfl/schemes/detail/scheme_table.h>
@@ -31,10 +32,13 @@ struct FaceSummary {
   std::size_t point_spheres = 0;    // faces of 1 corner
 };
 
-FaceSummary summarize(const Mesh& mesh) {
+// Under the boundary rule a hole's points come from the boundary polygon, not from formula (2), so its size
+// does not constrain the tension (`skip_holes`).
+FaceSummary summarize(const Mesh& mesh, bool skip_holes) {
   FaceSummary s;
   for (FaceId f : mesh.faces()) {
     const std::uint32_t n = mesh.size(f);
+    if (skip_holes && mesh.is_hole(f)) continue;
     if (n == 1) {
       ++s.point_spheres;
       continue;
@@ -109,10 +113,12 @@ double honeycomb_coefficient(int N, int n, int m, double a) {
 
 double honeycomb_tension(const HoneycombParams& p, int N) { return p.a ? *p.a : p.a0 + p.a1 / double(N); }
 
-void check_honeycomb_params(const Mesh& mesh, const HoneycombParams& p) { check_params(summarize(mesh), p); }
+void check_honeycomb_params(const Mesh& mesh, const HoneycombParams& p) {
+  check_params(summarize(mesh, p.boundary.rule == BoundaryRule::curve), p);
+}
 
 Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p, Origins* origins) {
-  const FaceSummary s = summarize(mesh);
+  const FaceSummary s = summarize(mesh, p.boundary.rule == BoundaryRule::curve);
   check_params(s, p);
 
   const std::size_t max_n = s.max_size;
@@ -161,14 +167,14 @@ Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p, Origins* origins) {
       new_points[n] = origin + (a * edge_points[n] + scale * rest);
     }
   };
-  return detail::honeycomb_remesh(mesh, face_points, false, origins).mesh;
+  return detail::honeycomb_remesh(mesh, face_points, false, p.boundary, "honeycomb", origins).mesh;
 }
 
 namespace detail {
 
 std::vector<ParamSpec> honeycomb_param_specs() {
   const HoneycombParams d;
-  return {
+  return with_boundary_params({
       param("t", ParamType::number, d.t, "where each edge's point lies: (1 - t) v_m + t v_m+1, formula (1)")
           .in(0, 1),
       param("a", ParamType::number, "a constant tension for every face, in place of a0 + a1/N")
@@ -176,7 +182,7 @@ std::vector<ParamSpec> honeycomb_param_specs() {
           .in_open(0, 1),
       param("a0", ParamType::number, d.a0, "the tension a0 + a1/N of an N-sided face: its constant part"),
       param("a1", ParamType::number, d.a1, "the tension a0 + a1/N of an N-sided face: the part divided by N"),
-  };
+  });
 }
 
 void check_honeycomb_param_set(const std::string& scheme, const Params& given, Params& resolved) {
@@ -196,6 +202,7 @@ HoneycombParams honeycomb_params_from(const Params& p) {
   if (p.has("a")) h.a = p.number("a");
   if (p.has("a0")) h.a0 = p.number("a0");
   if (p.has("a1")) h.a1 = p.number("a1");
+  h.boundary = boundary_options_from(p);
   return h;
 }
 

@@ -170,12 +170,14 @@ Mesh loop_open(const Mesh& input, const Mesh& m, const BoundaryOptions& boundary
 
 }  // namespace
 
-Mesh loop(const Mesh& input, Origins* origins, const BoundaryOptions& boundary) {
+Mesh loop(const Mesh& input, Origins* origins) { return loop(input, BoundaryOptions{}, origins); }
+
+Mesh loop(const Mesh& input, const BoundaryOptions& boundary, Origins* origins) {
   const bool curve = boundary.rule == BoundaryRule::curve;
   const detail::DenseTriangles dense(input, "loop", "Loop subdivision",
                                      curve ? detail::TriangleHoles::any : detail::TriangleHoles::triangles);
   const Mesh& m = dense.mesh();
-  const auto marks = curve ? detail::sharp_marks(m) : std::nullopt;
+  const auto marks = curve ? detail::sharp_marks(m, "loop") : std::nullopt;
   if (curve && m.num_hole_faces() > 0) return loop_open(input, m, boundary, marks, origins);
   const auto [nv, ne, nf, nc] = dense_counts(m);  // nc = 3 nf
   const std::uint32_t central_base = 3 * nc;      // first corner of the central triangles

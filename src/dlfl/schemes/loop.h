@@ -55,6 +55,9 @@ namespace dlfl {
 /// and edge(prev c)) <- c; under `curve`, a hole face <- the input's hole face. By kind: vertices V from
 /// vertices, E from edges; faces C from corners, F from faces (and H from faces); edges 2E from edges, C from
 /// corners. Costs nothing when not asked for.
-Mesh loop(const Mesh& mesh, Origins* origins = nullptr, const BoundaryOptions& boundary = {});
+Mesh loop(const Mesh& mesh, const BoundaryOptions& boundary, Origins* origins = nullptr);
+
+/// The same with the default boundary options (`curve`, sharp corners kept).
+Mesh loop(const Mesh& mesh, Origins* origins = nullptr);
 
 }  // namespace dlfl

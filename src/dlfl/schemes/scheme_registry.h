@@ -41,7 +41,8 @@ struct SchemeSpec {
   /// header for what each output element's origin is).
   std::function<Mesh(const Mesh& mesh, const Params& params, Origins* origins)> apply;
   /// The counts after one step, by the closed forms in the scheme's header (exact for a mesh without point
-  /// spheres), for predicting the size of a run before it starts. Optional.
+  /// spheres; on an open mesh under boundary=curve the points a boundary rule adds along the boundary, which
+  /// V, E and F do not tell, are left out), for predicting the size of a run before it starts. Optional.
   std::function<MeshCounts(const MeshCounts& counts, const Params& params)> counts;
 };
 

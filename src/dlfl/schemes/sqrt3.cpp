@@ -75,12 +75,14 @@ namespace {
 //   3 s0 + 1 at V + face(s1), twin 3 s1 + 1;        3 s1 + 1 at V + face(s0), twin 3 s0 + 1.
 // Every output corner is set exactly once (corner 0 and 1 of T(s) for the edge leaving s, corner 2 of T(r)
 // for the edge leaving prev(r)), so one pass over the edges builds the whole connectivity.
-Mesh sqrt3(const Mesh& input, Origins* origins, const BoundaryOptions& boundary) {
+Mesh sqrt3(const Mesh& input, Origins* origins) { return sqrt3(input, BoundaryOptions{}, origins); }
+
+Mesh sqrt3(const Mesh& input, const BoundaryOptions& boundary, Origins* origins) {
   const bool curve = boundary.rule == BoundaryRule::curve;
   const detail::DenseTriangles dense(input, "sqrt3", "sqrt(3) subdivision",
                                      curve ? detail::TriangleHoles::any : detail::TriangleHoles::refused);
   const Mesh& m = dense.mesh();
-  const auto marks = curve ? detail::sharp_marks(m) : std::nullopt;
+  const auto marks = curve ? detail::sharp_marks(m, "sqrt3") : std::nullopt;
   if (curve && m.num_hole_faces() > 0) return detail::sqrt3_open(input, m, boundary, marks, origins);
   const auto [nv, ne, nf, nc] = dense_counts(m);  // nc = 3 nf
   const std::uint32_t face_base = nv;             // vertex of the face point of face f

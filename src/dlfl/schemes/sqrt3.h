@@ -70,7 +70,10 @@ namespace dlfl {
 /// C from corners; edges E from edges, C from corners (open: vertices V, F - T from faces, 2T from edges;
 /// faces C from corners, H from faces; edges E + 2T from edges, C - T from corners). Costs nothing when not
 /// asked for.
-Mesh sqrt3(const Mesh& mesh, Origins* origins = nullptr, const BoundaryOptions& boundary = {});
+Mesh sqrt3(const Mesh& mesh, const BoundaryOptions& boundary, Origins* origins = nullptr);
+
+/// The same with the default boundary options (`curve`, sharp corners kept).
+Mesh sqrt3(const Mesh& mesh, Origins* origins = nullptr);
 
 /// The boolean face attribute by which a sqrt(3) step under the curve rule marks the hole faces of the loops
 /// it kept, so that the next step trisects them (see `sqrt3`).

@@ -8,6 +8,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/format.h>
+#include <dlfl/schemes/detail/boundary_params.h>
 #include <dlfl/schemes/detail/honeycomb_remesh.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
@@ -125,7 +126,10 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, Origins* o
       points[i] = (1.0 - b) * q + b * mid;
     }
   };
-  detail::HoneycombRemesh out = detail::honeycomb_remesh(mesh, face_points, true, origins);
+  detail::HoneycombRemesh out =
+      detail::honeycomb_remesh(mesh, face_points, true, p.boundary, "honeycomb-zw", origins);
+  // Under the boundary rule a hole is no face: it has no CCV of its own and lends none to its vertices.
+  const bool curve = p.boundary.rule == BoundaryRule::curve;
   Mesh& result = out.mesh;
   const FaceAttribute<glm::dvec3> result_points =
       result.add_face_attribute<glm::dvec3>(face_point_attribute, unset_point);
@@ -136,28 +140,36 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, Origins* o
   // Formula (3): the shrunken copy of each face.
   for (FaceId f : mesh.faces()) {
     const FaceId copy = out.face_of_face[f.index()];
-    if (!copy.valid()) continue;  // a point sphere
+    if (!copy.valid() || (curve && mesh.is_hole(f))) continue;  // a point sphere, or a boundary loop
     const double a = zhang_wang_a(p, int(mesh.size(f)));
     result_points[copy] = check_finite((1.0 - a) * ccv[f.index()] + a * centroid(mesh, f), copy);
   }
 
   // Formula (4): sums over the neighbours and the faces around each vertex, one corner at a time (the corner
-  // c at v has the neighbour vertex(next(c)) along its outgoing edge and the face face(c)).
+  // c at v has the neighbour vertex(next(c)) along its outgoing edge and the face face(c)). Under the
+  // boundary rule a boundary vertex of valence n has n neighbours but fewer faces: the CCVs' share 1 - alpha
+  // is spread over the faces it has (all of it goes to the neighbours if it has none).
   std::vector<glm::dvec3> neighbour_sum(mesh.vertex_capacity(), glm::dvec3(0.0));
   std::vector<glm::dvec3> ccv_sum(mesh.vertex_capacity(), glm::dvec3(0.0));
-  std::vector<std::uint32_t> valence(mesh.vertex_capacity(), 0);
+  std::vector<std::uint32_t> valence(mesh.vertex_capacity(), 0), faces(curve ? mesh.vertex_capacity() : 0, 0);
   for (CornerId c : mesh.corners()) {
     if (!mesh.edge(c).valid()) continue;  // a point sphere
     const std::uint32_t v = mesh.vertex(c).index();
     neighbour_sum[v] += mesh.position(mesh.vertex(mesh.next(c)));
-    ccv_sum[v] += ccv[mesh.face(c).index()];
     ++valence[v];
+    if (curve && mesh.is_hole(mesh.face(c))) continue;
+    ccv_sum[v] += ccv[mesh.face(c).index()];
+    if (curve) ++faces[v];
   }
   for (VertexId v : mesh.vertices()) {
     const std::uint32_t n = valence[v.index()];
     if (n == 0) continue;  // a point sphere: copied without a CCV
+    const std::uint32_t k = curve ? faces[v.index()] : n;
     const glm::dvec3 average =
-        (p.alpha * neighbour_sum[v.index()] + (1.0 - p.alpha) * ccv_sum[v.index()]) / double(n);
+        k == n   ? (p.alpha * neighbour_sum[v.index()] + (1.0 - p.alpha) * ccv_sum[v.index()]) / double(n)
+        : k == 0 ? neighbour_sum[v.index()] / double(n)
+                 : p.alpha * neighbour_sum[v.index()] / double(n) +
+                       (1.0 - p.alpha) * ccv_sum[v.index()] / double(k);
     const FaceId around = out.face_of_vertex[v.index()];
     result_points[around] = check_finite((1.0 - p.c) * mesh.position(v) + p.c * average, around);
   }
@@ -195,36 +207,36 @@ SchemeSpec zhang_wang_honeycomb_scheme() {
   // The tension a is a number, or "symmetric" for the paper's a_n = (4 - cos(2 pi / n)) / 9.
   constexpr const char* symmetric = "symmetric";
   const ZhangWangParams d;
-  return {
-      "honeycomb-zw",
-      "Zhang-Wang honeycomb: the honeycomb's topology, every face carrying a central control vertex",
-      {
-          param("a", ParamType::number, symmetric,
-                "the tension a_n of formula (3); 'symmetric': the paper's (4 - cos(2 pi / n)) / 9")
-              .in(0, 1)
-              .one_of({symmetric}),
-          param(
-              "b", ParamType::number, d.b,
-              "b_n of formula (2): each new edge vertex between the face's CCV (0) and the edge midpoint (1)")
-              .in(0, 1),
-          param("c", ParamType::number, d.c,
-                "c_n of formula (4): the CCV of a vertex's new face between the vertex (0) and its "
-                "neighbourhood (1)")
-              .in(0, 1),
-          param("alpha", ParamType::number, d.alpha,
-                "the weight of the neighbours in formula (4); the CCVs around get 1 - alpha")
-              .in(0, 1),
-      },
-      {},
-      [](const Mesh& m, const Params& p, Origins* origins) {
-        ZhangWangParams z;
-        if (p.get("a").kind() != Value::Kind::text) z.a = p.number("a");  // else the keyword
-        z.b = p.number("b");
-        z.c = p.number("c");
-        z.alpha = p.number("alpha");
-        return zhang_wang_honeycomb(m, z, origins);
-      },
-      [](const MeshCounts& c, const Params&) { return honeycomb_counts(c); }};
+  std::vector<ParamSpec> specs = with_boundary_params({
+      param("a", ParamType::number, symmetric,
+            "the tension a_n of formula (3); 'symmetric': the paper's (4 - cos(2 pi / n)) / 9")
+          .in(0, 1)
+          .one_of({symmetric}),
+      param("b", ParamType::number, d.b,
+            "b_n of formula (2): each new edge vertex between the face's CCV (0) and the edge midpoint (1)")
+          .in(0, 1),
+      param("c", ParamType::number, d.c,
+            "c_n of formula (4): the CCV of a vertex's new face between the vertex (0) and its "
+            "neighbourhood (1)")
+          .in(0, 1),
+      param("alpha", ParamType::number, d.alpha,
+            "the weight of the neighbours in formula (4); the CCVs around get 1 - alpha")
+          .in(0, 1),
+  });
+  return {"honeycomb-zw",
+          "Zhang-Wang honeycomb: the honeycomb's topology, every face carrying a central control vertex",
+          std::move(specs),
+          {},
+          [](const Mesh& m, const Params& p, Origins* origins) {
+            ZhangWangParams z;
+            if (p.get("a").kind() != Value::Kind::text) z.a = p.number("a");  // else the keyword
+            z.b = p.number("b");
+            z.c = p.number("c");
+            z.alpha = p.number("alpha");
+            z.boundary = boundary_options_from(p);
+            return zhang_wang_honeycomb(m, z, origins);
+          },
+          [](const MeshCounts& c, const Params&) { return honeycomb_counts(c); }};
 }
 
 }  // namespace detail

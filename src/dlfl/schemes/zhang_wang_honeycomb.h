@@ -14,16 +14,39 @@
 // with alpha_i = alpha / n and beta_i = (1 - alpha) / n, so that sum (alpha_i + beta_i) = 1 as the paper
 // requires (alpha = 1/2 gives the alpha_i = beta_i = 1/(2n)).
 //
-// Decisions beyond the paper (which assumes closed meshes):
-// - Hole faces are treated as faces (their CCV is their centroid unless set), and the shrunken copy of a hole
-//   is flagged as a hole again, as in `honeycomb`. The boundary rule of the paper's section 4.2 is not
-//   implemented: the boundary behaves as if the hole were capped by a face.
-// - Point spheres are copied through unchanged, without a CCV.
+// Open meshes (the paper's section 4.2, "Boundaries"), by ZhangWangParams::boundary.rule:
+// - `curve` (the default): the paper's boundary rule. A boundary vertex v, between its boundary neighbours
+//   v_1 and v_2, adds a new edge vertex to its new vertex face, at
+//     v_b = (1 - s_n) v + s_n (v_1 + v_2) / 2                                             formula (15)
+//   and a boundary edge's new edge vertex on the hole's side is its midpoint (formula (2) with the edge's own
+//   midpoint in place of a CCV, which a hole has not), joined across the edge to the face's edge vertex as
+//   every edge is. Weight: s_n = 1/2 for every n. Reasons (docs/zhang_wang.md, docs/boundaries.md):
+//   (a) a weight that depended on the valence n would let the faces inside change the boundary curve, so
+//       two meshes sharing a boundary loop would crack apart;
+//   (b) the paper adds v_b only at vertices of valence greater than 2, and we keep a vertex of valence 2 in
+//       place (a corner); after one step every other boundary vertex is a v_b of valence 2, and s_n = 1/2 is
+//       the only constant weight for which such a vertex already lies where (15) would put it (the midpoint
+//       of its neighbours), so keeping it and smoothing it agree and the rule is the same at every step;
+//   (c) the boundary then depends on the boundary polygon alone, and its limit is the uniform quadratic
+//       B-spline whose control polygon is the polygon of the boundary edges' midpoints: a C1 curve through
+//       (v_1 + 2v + v_2)/4 at every boundary vertex, the v_b of the first step, which never moves again.
+//   It is the rule `honeycomb` derives from its vertex insertion and corner cutting, so both honeycombs have
+//   the same boundary curve. A boundary vertex with exactly two edges is a corner (`sharp_corners`, the
+//   default) and keeps its place, v_b = v, as the paper's "valence greater than 2" asks; so does a vertex
+//   marked `sharp`, whose v_b is marked `sharp` in the result. Between sharp vertices the limit is the
+//   clamped quadratic B-spline of (v, midpoints, ..., next sharp vertex). A hole has no CCV: the vertex
+//   face's CCV of a boundary vertex (formula (4)) spreads 1 - alpha over the faces it has, and the hole's
+//   shrunken copy (still a hole, of 2N corners for N) gets no CCV. Counts: with H hole corners,
+//   V' = 2E + H, E' = 3E + H, F' = F + V.
+// - `hole` (the behaviour before boundary rules): hole faces are treated as faces (their CCV is their
+//   centroid unless set), and the shrunken copy of a hole is flagged as a hole again, as in `honeycomb`.
+// Point spheres are copied through unchanged, without a CCV.
 
 #include <optional>
 #include <string_view>
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/boundary_rule.h>
 #include <dlfl/schemes/origins.h>
 
 namespace dlfl {
@@ -58,6 +81,8 @@ struct ZhangWangParams {
   double c = 0.5;
   /// The total weight of the neighbours p_i in formula (4) (n alpha_i); the CCVs q_i get 1 - alpha.
   double alpha = 0.5;
+  /// What the step does at the boundary loops of an open mesh (see above); the default is formula (15).
+  BoundaryOptions boundary = {};
 };
 
 /// a_n for a face of n vertices: `p.a` when set, else (4 - cos(2 pi / n)) / 9. Throws InvalidArgument for
@@ -69,9 +94,10 @@ void check_zhang_wang_params(const ZhangWangParams& p);
 
 /// One step. The input is not modified. The result has the honeycomb's topology (V' = 2E, E' = 3E,
 /// F' = F + V, every new vertex 3-valent, each shrunken face of its old face's size, each vertex face of
-/// twice its old vertex's valence, the Euler characteristic and genus of every component kept), and every
-/// face of it (point spheres aside) carries its CCV. Handles are those of `honeycomb` on the same mesh. The
-/// result has no attribute but "face_point".
+/// twice its old vertex's valence, the Euler characteristic and genus of every component kept; under the
+/// boundary rule, see above), and every face of it (point spheres and, under `curve`, holes aside) carries
+/// its CCV. Handles are those of `honeycomb` on the same mesh with the same boundary options. The result has
+/// no attribute but "face_point" (and "sharp" when the boundary rule keeps a marked vertex).
 /// The shrunken copy of a face starts at the point for the face's first corner (the point on the edge leaving
 /// it). Throws InvalidArgument for a bad parameter or a non-finite new point. When `origins` is given it
 /// receives the origin of every element, those of `honeycomb` (dlfl/schemes/honeycomb.h): the shrunken copy

@@ -4,10 +4,6 @@
 
 namespace dlfl::detail {
 
-std::optional<ConstAttribute<VertexId, bool>> sharp_marks(const Mesh& mesh) {
-  return mesh.find_attribute<VertexId, bool>(sharp_vertex_attribute);
-}
-
 BoundaryVertices::BoundaryVertices(const Mesh& m, const BoundaryOptions& options,
                                    const std::optional<ConstAttribute<VertexId, bool>>& marks) {
   const auto [nv, ne, nf, nc] = dense_counts(m);

@@ -13,13 +13,10 @@
 #include <dlfl/mesh.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/boundary_rule.h>
+#include <dlfl/schemes/detail/boundary_points.h>
 #include <dlfl/schemes/detail/scheme_origins.h>
 
 namespace dlfl::detail {
-
-/// The `sharp` marks of a mesh (boundary_rule.h), if it has them. Throws InvalidArgument if the mesh has a
-/// vertex attribute of that name of another type than bool: call it before any work.
-std::optional<ConstAttribute<VertexId, bool>> sharp_marks(const Mesh& mesh);
 
 /// How the curve rule treats each vertex of a dense mesh (handles 0 .. count-1).
 class BoundaryVertices {

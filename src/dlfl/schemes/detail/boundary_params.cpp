@@ -17,6 +17,11 @@ std::vector<ParamSpec> boundary_param_specs() {
                 "boundary vertices with exactly two edges stay put (with boundary=curve)")};
 }
 
+std::vector<ParamSpec> with_boundary_params(std::vector<ParamSpec> specs) {
+  for (ParamSpec& spec : boundary_param_specs()) specs.push_back(std::move(spec));
+  return specs;
+}
+
 BoundaryOptions boundary_options_from(const Params& resolved) {
   BoundaryOptions options;
   options.rule = resolved.text("boundary") == "hole" ? BoundaryRule::hole : BoundaryRule::curve;

@@ -13,6 +13,9 @@ namespace dlfl::detail {
 /// and `sharp_corners` (boolean, true).
 std::vector<ParamSpec> boundary_param_specs();
 
+/// `specs` followed by the boundary parameters.
+std::vector<ParamSpec> with_boundary_params(std::vector<ParamSpec> specs);
+
 /// The options of a resolved parameter set.
 BoundaryOptions boundary_options_from(const Params& resolved);
 

@@ -7,14 +7,16 @@
 #include <vector>
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/boundary_rule.h>
 #include <dlfl/schemes/meng_prautzsch_honeycomb.h>
 #include <dlfl/schemes/meng_prautzsch_pushing.h>
 #include <dlfl/schemes/origins.h>
 
 namespace dlfl::detail {
 
-/// `dual`; the corner for input corner c (at v, in face f) <- c.
-Mesh dual(const Mesh& mesh, Origins* origins, std::vector<Origin>* corners);
+/// `dual`; the corner for input corner c (at v, in face f) <- c; under the boundary rule every corner of a
+/// hole corner's group, in its vertex's face and in the hole face, <- that hole corner.
+Mesh dual(const Mesh& mesh, const BoundaryOptions& boundary, Origins* origins, std::vector<Origin>* corners);
 
 /// `mp_honeycomb`; a corner at the f-face vertex of input corner x <- x (in the f-face and in the hexagons);
 /// a hexagon's corner at an old vertex <- the input corner that leaves that vertex along the hexagon's edge.

@@ -11,7 +11,8 @@
 namespace dlfl::detail {
 
 /// t, a, a0, a1 with their types, defaults and ranges (a0 and a1 have none of their own: a0 + a1/N must lie
-/// in (0, 1) for the mesh's face sizes, which only the step can check).
+/// in (0, 1) for the mesh's face sizes, which only the step can check), then `boundary` and `sharp_corners`
+/// (detail/boundary_params.h).
 std::vector<ParamSpec> honeycomb_param_specs();
 
 /// The check hook of both schemes: a constant `a` excludes a0/a1 (ParameterError naming `a`, in the words of

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/boundary_rule.h>
 #include <dlfl/schemes/origins.h>
 
 namespace dlfl::detail {
@@ -36,11 +37,24 @@ struct HoneycombRemesh {
 /// two sides. V' = 2E, E' = 3E, F' = F + V, every new vertex 3-valent. All elements are reserved up front.
 /// `face_points` is called once per face, in handle order.
 ///
+/// Under `boundary.rule == curve` (on a mesh with holes) a hole's face manifold has two points per corner h
+/// (at vertex v_i, between boundary neighbours u and w, hole order): the boundary vertex point
+/// `honeycomb_boundary_vertex(u, v_i, w, sharp)` and then the midpoint of the edge leaving h, the point made
+/// for h that the edge across joins; `face_points` is not called for holes. So each boundary vertex's face
+/// gets one more corner (the vertex point, of valence 2), the hole's front face has 2N corners and stays a
+/// hole, and V' = 2E + H, E' = 3E + H, F' = F + V with H the hole corners. The sharp vertices are those of
+/// `sharp_boundary_vertices(mesh, boundary, scheme)`; the vertex point of each vertex marked `sharp` is
+/// marked `sharp` in the result (a corner kept for having two edges keeps two edges, so it needs no mark).
+/// Under `hole` the hole is treated as a face, as above.
+///
 /// When `origins` is given it receives the honeycomb's origins (see `honeycomb`): a new vertex <- the corner
 /// it is made for, a front face <- its face, a vertex's face <- the vertex, a front face's side from the
 /// point of c to the point of next(c) <- next(c) (the corner it cuts off), an inserted edge <- the edge it
-/// crosses; a copied point sphere and its face <- its vertex.
+/// crosses; a copied point sphere and its face <- its vertex; under `curve`, a boundary vertex point <- its
+/// vertex, and the hole front face's side from a vertex point to the next point <- the hole corner it cuts
+/// off, like the side before it.
 HoneycombRemesh honeycomb_remesh(const Mesh& mesh, const FacePointsFn& face_points, bool want_face_of_vertex,
+                                 const BoundaryOptions& boundary, const char* scheme,
                                  Origins* origins = nullptr);
 
 }  // namespace dlfl::detail

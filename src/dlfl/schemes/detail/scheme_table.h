@@ -24,16 +24,16 @@ inline SchemeSpec parameterless_scheme(Mesh (*step)(const Mesh&, Origins*), std:
 }
 
 /// The declaration of a scheme whose parameters are the boundary options (`boundary` and `sharp_corners`,
-/// boundary_params.h), whose step is `step(mesh, origins, options)` and whose closed-form counts are
+/// boundary_params.h), whose step is `step(mesh, options, origins)` and whose closed-form counts are
 /// `counts`.
-inline SchemeSpec boundary_scheme(Mesh (*step)(const Mesh&, Origins*, const BoundaryOptions&),
+inline SchemeSpec boundary_scheme(Mesh (*step)(const Mesh&, const BoundaryOptions&, Origins*),
                                   std::string name, std::string doc,
                                   MeshCounts (*counts)(const MeshCounts&)) {
   // Name, doc and counts as a scheme without parameters; then the parameters and a step that reads them.
   SchemeSpec spec = parameterless_scheme(nullptr, std::move(name), std::move(doc), counts);
   spec.params = boundary_param_specs();
   spec.apply = [step](const Mesh& mesh, const Params& params, Origins* origins) {
-    return step(mesh, origins, boundary_options_from(params));
+    return step(mesh, boundary_options_from(params), origins);
   };
   return spec;
 }

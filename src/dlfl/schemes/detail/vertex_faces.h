@@ -21,6 +21,9 @@ namespace dlfl::detail {
 /// for a point sphere ("SCHEME: v3 is a point sphere (no edge)") and, with `refuse_valence_one`, a vertex of
 /// valence 1 ("SCHEME: v3 has valence 1 (its face would have a single corner)"), naming `input`'s handles.
 ///
+/// The general form gives corner c `slots_of(c)` consecutive slots (0 or more; the boundary rules give a
+/// hole's corner two), `slot[c]` being the first; the valence-one refusal counts corners, not slots.
+///
 /// Inline: it runs once per corner inside the scheme's own pass, and a call boundary costs the schemes a few
 /// percent (the loop reloads the mesh's arrays after every store).
 ///
@@ -29,9 +32,11 @@ namespace dlfl::detail {
 /// that of edge(p) (towards vertex(p)). Turning further counter-clockwise crosses edge(p) into the face of
 /// opposite(p), whose corner at v is opposite(p) itself (it starts where p's edge ends): that is
 /// prev_around_vertex(c). So listing the corners around v along prev_around_vertex is counter-clockwise.
+template <class SlotsOf>
 inline void number_vertex_face_corners(const Mesh& m, const Mesh& input, const char* scheme,
                                        std::uint32_t first, std::span<std::uint32_t> offsets,
-                                       std::span<std::uint32_t> slot, bool refuse_valence_one) {
+                                       std::span<std::uint32_t> slot, bool refuse_valence_one,
+                                       const SlotsOf& slots_of) {
   const auto nv = static_cast<std::uint32_t>(m.num_vertices());
   std::uint32_t next_slot = first;
   for (std::uint32_t v = 0; v < nv; ++v) {
@@ -39,13 +44,24 @@ inline void number_vertex_face_corners(const Mesh& m, const Mesh& input, const c
     const CornerId start = m.corner(VertexId(v));
     if (!m.edge(start).valid()) refuse_vertex_face(input, scheme, v, true);
     CornerId c = start;
+    std::uint32_t corners = 0;
     do {
-      slot[c.index()] = next_slot++;
+      slot[c.index()] = next_slot;
+      next_slot += slots_of(c);
+      ++corners;
       c = m.prev_around_vertex(c);
     } while (c != start);
-    if (refuse_valence_one && next_slot - offsets[v] == 1) refuse_vertex_face(input, scheme, v, false);
+    if (refuse_valence_one && corners == 1) refuse_vertex_face(input, scheme, v, false);
   }
   offsets[nv] = next_slot;
+}
+
+/// One slot per corner.
+inline void number_vertex_face_corners(const Mesh& m, const Mesh& input, const char* scheme,
+                                       std::uint32_t first, std::span<std::uint32_t> offsets,
+                                       std::span<std::uint32_t> slot, bool refuse_valence_one) {
+  number_vertex_face_corners(m, input, scheme, first, offsets, slot, refuse_valence_one,
+                             [](CornerId) { return std::uint32_t{1}; });
 }
 
 }  // namespace dlfl::detail
