@@ -243,24 +243,26 @@ void read_indexed_lists(IndexedLists& out, py::handle positions, py::handle list
   if (py::isinstance<py::tuple>(lists) && py::len(lists) == 2) {  // (offsets, indices)
     const auto offsets = integer_array(lists[py::int_(0)], what, "offsets");
     const auto indices = integer_array(lists[py::int_(1)], what, "indices");
-    if (offsets.ndim() != 1 || indices.ndim() != 1 || offsets.size() == 0 || offsets.at(0) != 0 ||
-        offsets.at(offsets.size() - 1) != indices.size()) {
+    const auto n = std::size_t(offsets.size()), m = std::size_t(indices.size());
+    const std::int64_t* o = offsets.data();
+    const std::int64_t* x = indices.data();
+    if (offsets.ndim() != 1 || indices.ndim() != 1 || n == 0 || o[0] != 0 || o[n - 1] != std::int64_t(m) ||
+        m > std::size_t(max_index)) {
       throw InvalidArgument(
           std::string(what) +
           ": (offsets, indices) needs offsets from 0 to len(indices), both one-dimensional");
     }
-    out.offsets.resize(std::size_t(offsets.size()));
-    for (py::ssize_t k = 0; k < offsets.size(); ++k) {
-      if (k > 0 && offsets.at(k) < offsets.at(k - 1)) {
+    out.offsets.resize(n);
+    for (std::size_t k = 0; k < n; ++k) {
+      if (k > 0 && o[k] < o[k - 1]) {
         throw InvalidArgument(std::string(what) + ": offsets decrease at list " + std::to_string(k - 1));
       }
-      out.offsets[std::size_t(k)] = std::uint32_t(offsets.at(k));
+      out.offsets[k] = std::uint32_t(o[k]);
     }
-    out.indices.resize(std::size_t(indices.size()));
-    std::size_t list = 0;
-    for (py::ssize_t k = 0; k < indices.size(); ++k) {
-      while (out.offsets[list + 1] <= std::uint64_t(k)) ++list;
-      out.indices[std::size_t(k)] = check(list, indices.at(k));
+    out.indices.resize(m);
+    for (std::size_t list = 0; list + 1 < n; ++list) {
+      for (std::uint32_t k = out.offsets[list]; k < out.offsets[list + 1]; ++k)
+        out.indices[k] = check(list, x[k]);
     }
     return;
   }
