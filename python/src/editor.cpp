@@ -101,8 +101,7 @@ making it self-contained; undo_limit bounds the history (0: unlimited).)doc",
         edit(self, true, [&](Editor& e) { return e.apply("subdivide", given); });
       },
       "Applies `iterations` steps of a scheme, its parameters as keywords, as one undo entry (undo gives "
-      "back "
-      "the previous mesh exactly). The GIL is released meanwhile.",
+      "back the previous mesh exactly). The GIL is released meanwhile.",
       py::arg("scheme"), py::arg("iterations") = 1);
   c.def(
       "set_mesh", [](EditorBox& self, py::handle mesh, py::handle source) { set_mesh(self, mesh, source); },
@@ -135,8 +134,7 @@ making it self-contained; undo_limit bounds the history (0: unlimited).)doc",
       "log",
       [](EditorBox& self) { return from_json(edit(self, true, [](Editor& e) { return log_text(e); })); },
       "The operation log as a dict (format dlfl-oplog, docs/oplog.md): every operation applied, undo and "
-      "redo "
-      "included, with the final mesh's hash. dlfl.replay takes it back.");
+      "redo included, with the final mesh's hash. dlfl.replay takes it back.");
   c.def(
       "write_log",
       [](EditorBox& self, py::handle path) {

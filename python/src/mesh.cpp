@@ -3,6 +3,9 @@
 
 #include <pybind11/stl.h>
 
+#include <array>
+#include <string>
+
 #include <dlfl/analysis/mesh_info.h>
 #include <dlfl/build_mesh.h>
 #include <dlfl/geometry.h>
@@ -43,9 +46,9 @@ ElementKind kind_of(const std::string& kind) {
 
 // A method on one element of kind H: the handle is checked, then f(mesh, handle) runs under the mesh's lock.
 template <class H, class F>
-auto on(const char* what, F f) {
+auto on(std::string what, F f) {
   return [what, f](const MeshRef& self, Index i) {
-    return self.read([&](const Mesh& m) { return f(m, live_handle<H>(m, i, what)); });
+    return self.read([&](const Mesh& m) { return f(m, live_handle<H>(m, i, what.c_str())); });
   };
 }
 
@@ -215,26 +218,28 @@ const ElementMethod<FaceId, std::uint32_t> face_numbers[] = {
     {"face_size", [](const Mesh& m, FaceId f) { return m.size(f); },
      "The number of corners of face f (1 for a point sphere, 2 for a 2-gon)."},
 };
-const ElementMethod<VertexId, py::array> vertex_ranges[] = {
-    {"vertex_corners", [](const Mesh& m, VertexId v) { return handles(m.corners(v)); },
-     "The corners at vertex v, from its representative corner, turning clockwise seen from outside."},
-    {"vertex_neighbours", [](const Mesh& m, VertexId v) { return handles(neighbours(m, v)); },
-     "The vertices joined to v by an edge, one per edge, in the order of vertex_corners."},
-    {"vertex_edges", [](const Mesh& m, VertexId v) { return handles(edges(m, v)); },
-     "The edges at vertex v, in the order of vertex_neighbours."},
-    {"vertex_faces", [](const Mesh& m, VertexId v) { return handles(faces(m, v)); },
-     "The faces around vertex v, one per corner, in the order of vertex_corners."},
-};
-const ElementMethod<FaceId, py::array> face_ranges[] = {
-    {"face_corners", [](const Mesh& m, FaceId f) { return handles(m.corners(f)); },
-     "The corners of face f, from its first corner along next."},
-    {"face_vertices", [](const Mesh& m, FaceId f) { return handles(vertices(m, f)); },
-     "The vertices of face f, counter-clockwise seen from outside."},
-    {"face_edges", [](const Mesh& m, FaceId f) { return handles(edges(m, f)); },
-     "The edges of face f; edge i runs from vertex i to vertex i + 1 of face_vertices."},
-    {"face_neighbours", [](const Mesh& m, FaceId f) { return handles(neighbours(m, f)); },
-     "The faces across the edges of face f, in the order of face_edges."},
-};
+// The ranges around a vertex or a face (mesh.h, navigation.h) as handle arrays: KIND_corners,
+// KIND_neighbours, KIND_edges, and vertex_faces or face_vertices.
+template <class H>
+void bind_ranges(py::class_<MeshRef>& c, const std::array<const char*, 4>& docs) {
+  constexpr bool vertex = std::is_same_v<H, VertexId>;
+  using Range = py::array (*)(const Mesh&, H);
+  const Range ranges[] = {
+      [](const Mesh& m, H h) { return handles(m.corners(h)); },
+      [](const Mesh& m, H h) { return handles(neighbours(m, h)); },
+      [](const Mesh& m, H h) { return handles(edges(m, h)); },
+      [](const Mesh& m, H h) {
+        if constexpr (vertex) return handles(faces(m, h));
+        if constexpr (!vertex) return handles(vertices(m, h));
+      },
+  };
+  const char* kinds[] = {"corners", "neighbours", "edges", vertex ? "faces" : "vertices"};
+  for (std::size_t i = 0; i < 4; ++i) {
+    const std::string name = std::string(to_string(element_kind_v<H>)) + "_" + kinds[i];
+    c.def(name.c_str(), on<H>(name, ranges[i]), docs[i], py::arg(argument_name<H>()));
+  }
+}
+
 const ElementMethod<VertexId, py::tuple> vertex_points[] = {
     {"position", [](const Mesh& m, VertexId v) { return point(m.position(v)); },
      "The position of vertex v, (x, y, z)."},
@@ -276,6 +281,16 @@ const ElementMethod<FaceId, double> face_areas[] = {
      "The area of face f (half the length of its Newell vector)."},
 };
 
+// A method on two elements: mesh.NAME(a, b) runs `f` on the checked handles; None for the invalid handle.
+template <class A, class B, class F>
+auto between(const char* what, F f) {
+  return [what, f](const MeshRef& self, Index a, Index b) {
+    return self.read([&](const Mesh& m) {
+      return handle_or_none(f(m, live_handle<A>(m, a, what), live_handle<B>(m, b, what)));
+    });
+  };
+}
+
 // What an edge has on side 0 or 1: its corner or its face.
 template <class F>
 auto on_side(const char* what, F f) {
@@ -293,8 +308,15 @@ void bind_navigation(py::class_<MeshRef>& c) {
   bind_methods(c, corner_edges);
   bind_methods(c, vertex_numbers);
   bind_methods(c, face_numbers);
-  bind_methods(c, vertex_ranges);
-  bind_methods(c, face_ranges);
+  bind_ranges<VertexId>(
+      c, {"The corners at vertex v, from its representative corner, turning clockwise seen from outside.",
+          "The vertices joined to v by an edge, one per edge, in the order of vertex_corners.",
+          "The edges at vertex v, in the order of vertex_neighbours.",
+          "The faces around vertex v, one per corner, in the order of vertex_corners."});
+  bind_ranges<FaceId>(c, {"The corners of face f, from its first corner along next.",
+                          "The faces across the edges of face f, in the order of face_edges.",
+                          "The edges of face f; edge i runs from vertex i to vertex i + 1 of face_vertices.",
+                          "The vertices of face f, counter-clockwise seen from outside."});
   bind_methods(c, vertex_points);
   bind_methods(c, face_points);
   bind_methods(c, vertex_tests);
@@ -309,24 +331,10 @@ void bind_navigation(py::class_<MeshRef>& c) {
   c.def("edge_face",
         on_side("edge_face", [](const Mesh& m, EdgeId e, int side) { return m.face(e, side).index(); }),
         "The face on side 0 or 1 of edge e.", py::arg("e"), py::arg("side"));
-  c.def(
-      "find_edge",
-      [](const MeshRef& self, Index u, Index v) {
-        return self.read([&](const Mesh& m) {
-          return handle_or_none(find_edge(m, live_handle<VertexId>(m, u, "find_edge"),
-                                          live_handle<VertexId>(m, v, "find_edge")));
-        });
-      },
-      "An edge between vertices u and v, or None.", py::arg("u"), py::arg("v"));
-  c.def(
-      "corner_in_face",
-      [](const MeshRef& self, Index v, Index f) {
-        return self.read([&](const Mesh& m) {
-          return handle_or_none(corner_in_face(m, live_handle<VertexId>(m, v, "corner_in_face"),
-                                               live_handle<FaceId>(m, f, "corner_in_face")));
-        });
-      },
-      "The corner of vertex v in face f, or None if f does not visit v.", py::arg("v"), py::arg("f"));
+  c.def("find_edge", between<VertexId, VertexId>("find_edge", find_edge),
+        "An edge between vertices u and v, or None.", py::arg("u"), py::arg("v"));
+  c.def("corner_in_face", between<VertexId, FaceId>("corner_in_face", corner_in_face),
+        "The corner of vertex v in face f, or None if f does not visit v.", py::arg("v"), py::arg("f"));
 }
 
 }  // namespace
@@ -412,21 +420,18 @@ sphere. Raises PolygonError (element, index) for a face or vertex that is not a 
         });
       },
       "The vertex positions, an (capacity, 3) float64 array indexed by vertex handle (rows of removed "
-      "vertices "
-      "are stale). A read-only view of the mesh's storage, no copy; a copy for a live mesh.");
-  c.def_property_readonly(
-      "faces_offsets",
-      [](const MeshRef& self) {
-        return self.read([](const Mesh& mesh) { return polygon_lists(mesh, true); });
-      },
-      "The polygons (live faces but holes and point spheres' faces, in handle order): polygon i is "
-      "faces_indices[faces_offsets[i]:faces_offsets[i + 1]]. uint32.");
-  c.def_property_readonly(
-      "faces_indices",
-      [](const MeshRef& self) {
-        return self.read([](const Mesh& mesh) { return polygon_lists(mesh, false); });
-      },
-      "The vertex handles of the polygons, one per corner (see faces_offsets). uint32.");
+      "vertices are stale). A read-only view of the mesh's storage, no copy; a copy for a live mesh.");
+  // The polygons (live faces but holes and point spheres' faces, in handle order), as offsets and indices.
+  for (const bool offsets : {true, false}) {
+    c.def_property_readonly(
+        offsets ? "faces_offsets" : "faces_indices",
+        [offsets](const MeshRef& self) {
+          return self.read([offsets](const Mesh& mesh) { return polygon_lists(mesh, offsets); });
+        },
+        offsets ? "The polygons (live faces but holes and point spheres' faces, in handle order): polygon i "
+                  "is faces_indices[faces_offsets[i]:faces_offsets[i + 1]]. uint32."
+                : "The vertex handles of the polygons, one per corner (see faces_offsets). uint32.");
+  }
   c.def(
       "to_arrays",
       [](const MeshRef& self) {
@@ -437,8 +442,8 @@ sphere. Raises PolygonError (element, index) for a face or vertex that is not a 
                            index_array(soup.indices.data(), soup.indices.size(), py::none())));
       },
       "(positions, (offsets, indices)): the polygons as a polygon file holds them, vertices renumbered "
-      "densely "
-      "(Mesh.from_arrays(*mesh.to_arrays()) rebuilds the mesh). Raises TopologyError for a 2-gon or a double "
+      "densely (Mesh.from_arrays(*mesh.to_arrays()) rebuilds the mesh). Raises TopologyError for a 2-gon or "
+      "a double "
       "edge, which a polygon list cannot hold.");
 
   c.def(
