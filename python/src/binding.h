@@ -13,6 +13,7 @@
 #include <optional>
 #include <span>
 #include <string_view>
+#include <vector>
 
 #include <dlfl/cells/cell_complex.h>
 #include <dlfl/errors.h>
@@ -119,6 +120,9 @@ void read_indexed_lists(IndexedLists& out, py::handle positions, py::handle list
 py::array point_array(const glm::dvec3* points, std::size_t n, py::handle owner);
 /// A uint32 NumPy array viewing (or, when owner is None, copying) `n` values.
 py::array index_array(const std::uint32_t* values, std::size_t n, py::handle owner);
+/// NumPy arrays that take over `values` (no copy), writeable: uint32, and (n, 3) float64.
+py::array owned_array(std::vector<std::uint32_t> values);
+py::array owned_points(std::vector<glm::dvec3> points);
 
 /// A Python value as a parameter value. `spec`, when known, settles what a list means (handles, numbers,
 /// points); None is "not given". Throws ParameterError naming `context` and `name` for an object that is no

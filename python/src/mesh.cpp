@@ -4,7 +4,10 @@
 #include <pybind11/stl.h>
 
 #include <array>
+#include <cstring>
 #include <string>
+#include <utility>
+#include <variant>
 
 #include <dlfl/analysis/mesh_info.h>
 #include <dlfl/build_mesh.h>
@@ -19,22 +22,35 @@ namespace {
 
 using Index = std::int64_t;
 
-// What keeps a view of a mesh's storage valid: a capsule sharing the mesh. None for a live mesh, whose
-// storage moves with the editor's operations: its arrays are copies.
+// What keeps a view of a mesh's storage valid: a capsule sharing the mesh (one of its own: a live mesh's
+// storage moves with the editor's operations, so its arrays are copies).
 py::object view_owner(const MeshRef& self) {
-  if (self.live()) return py::none();
   auto* keep = new std::shared_ptr<const Mesh>(self.owned());
   return py::capsule(keep, [](void* p) { delete static_cast<std::shared_ptr<const Mesh>*>(p); });
 }
 
 py::tuple point(const glm::dvec3& p) { return py::make_tuple(p.x, p.y, p.z); }
 
-// The handles a range gives, as a uint32 array.
+// The handles a range gives.
 template <class Range>
-py::array handles(const Range& range) {
+std::vector<std::uint32_t> handles(const Range& range) {
   std::vector<std::uint32_t> out;
   for (auto h : range) out.push_back(h.index());
-  return index_array(out.data(), out.size(), py::none());
+  return out;
+}
+
+// What a method found under the mesh's lock, as Python: handles as a uint32 array, a point as (x, y, z), the
+// rest as pybind11 converts it. Python objects are made only after the lock is released, so that no Python
+// code (a finalizer run by the garbage collector) runs while the lock is held.
+template <class T>
+auto to_py(T value) {
+  if constexpr (std::is_same_v<T, std::vector<std::uint32_t>>) {
+    return owned_array(std::move(value));
+  } else if constexpr (std::is_same_v<T, glm::dvec3>) {
+    return point(value);
+  } else {
+    return value;
+  }
 }
 
 ElementKind kind_of(const std::string& kind) {
@@ -48,13 +64,13 @@ ElementKind kind_of(const std::string& kind) {
 template <class H, class F>
 auto on(std::string what, F f) {
   return [what, f](const MeshRef& self, Index i) {
-    return self.read([&](const Mesh& m) { return f(m, live_handle<H>(m, i, what.c_str())); });
+    return to_py(self.read([&](const Mesh& m) { return f(m, live_handle<H>(m, i, what.c_str())); }));
   };
 }
 
 // The polygons (live faces that are neither holes nor point spheres' faces) in face handle order, as lists
 // of vertex handles: offsets (one more than the polygons) or indices.
-py::array polygon_lists(const Mesh& m, bool offsets) {
+std::vector<std::uint32_t> polygon_lists(const Mesh& m, bool offsets) {
   std::vector<std::uint32_t> out(offsets ? 1 : 0, 0);
   std::uint32_t end = 0;
   for (FaceId f : m.faces()) {
@@ -66,31 +82,24 @@ py::array polygon_lists(const Mesh& m, bool offsets) {
       for (CornerId c : m.corners(f)) out.push_back(m.vertex(c).index());
     }
   }
-  return index_array(out.data(), out.size(), py::none());
+  return out;
 }
 
+// The values of an attribute by handle, copied under the lock; made into an array after it (bool as uint8).
+using AttributeCopy =
+    std::variant<std::vector<std::uint8_t>, std::vector<int>, std::vector<double>, std::vector<glm::dvec3>>;
+
 template <class H, class T>
-py::array attribute_values(const Mesh& m, const std::string& name) {
+AttributeCopy attribute_values(const Mesh& m, const std::string& name) {
   const auto values = m.attribute<H, T>(name);
-  const std::size_t n = m.capacity(element_kind_v<H>);
-  if constexpr (std::is_same_v<T, glm::dvec3>) {
-    py::array_t<double> out({py::ssize_t(n), py::ssize_t(3)});
-    double* d = out.mutable_data();
-    for (std::size_t i = 0; i < n; ++i) {
-      const glm::dvec3& p = values[H(std::uint32_t(i))];
-      d[3 * i] = p.x, d[3 * i + 1] = p.y, d[3 * i + 2] = p.z;
-    }
-    return out;
-  } else {
-    py::array_t<T> out(py::ssize_t{py::ssize_t(n)});
-    T* d = out.mutable_data();
-    for (std::size_t i = 0; i < n; ++i) d[i] = values[H(std::uint32_t(i))];
-    return out;
-  }
+  std::vector<std::conditional_t<std::is_same_v<T, bool>, std::uint8_t, T>> out(
+      m.capacity(element_kind_v<H>));
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = values[H(std::uint32_t(i))];
+  return out;
 }
 
 template <class H>
-py::array attribute_of_kind(const Mesh& m, const std::string& name, AttributeType type) {
+AttributeCopy attribute_of_kind(const Mesh& m, const std::string& name, AttributeType type) {
   switch (type) {
     case AttributeType::boolean:
       return attribute_values<H, bool>(m, name);
@@ -104,7 +113,7 @@ py::array attribute_of_kind(const Mesh& m, const std::string& name, AttributeTyp
   return attribute_values<H, glm::dvec3>(m, name);
 }
 
-py::array attribute(const Mesh& m, const std::string& kind_name, const std::string& name) {
+AttributeCopy attribute(const Mesh& m, const std::string& kind_name, const std::string& name) {
   const ElementKind kind = kind_of(kind_name);
   for (const AttributeInfo& a : m.attributes()) {
     if (a.kind != kind || a.name != name) continue;
@@ -123,6 +132,22 @@ py::array attribute(const Mesh& m, const std::string& kind_name, const std::stri
   throw InvalidArgument("attribute: the " + kind_name + "s have no attribute '" + name + "'");
 }
 
+py::array attribute_array(AttributeCopy values) {
+  return std::visit(
+      [](auto& v) -> py::array {
+        using T = typename std::decay_t<decltype(v)>::value_type;
+        if constexpr (std::is_same_v<T, glm::dvec3>) {
+          return owned_points(std::move(v));
+        } else {
+          py::array_t<std::conditional_t<std::is_same_v<T, std::uint8_t>, bool, T>> out(
+              py::ssize_t(v.size()));
+          if (!v.empty()) std::memcpy(out.mutable_data(), v.data(), v.size() * sizeof(T));
+          return out;
+        }
+      },
+      values);
+}
+
 py::object attribute_value(const AttributeValue& v) {
   return std::visit(
       [](const auto& x) -> py::object {
@@ -135,9 +160,9 @@ py::object attribute_value(const AttributeValue& v) {
       v);
 }
 
-py::list attributes(const Mesh& m) {
+py::list attributes(const std::vector<AttributeInfo>& infos) {
   py::list out;
-  for (const AttributeInfo& a : m.attributes()) {
+  for (const AttributeInfo& a : infos) {
     py::dict d;
     d["name"] = a.name;
     d["kind"] = to_string(a.kind);
@@ -223,7 +248,7 @@ const ElementMethod<FaceId, std::uint32_t> face_numbers[] = {
 template <class H>
 void bind_ranges(py::class_<MeshRef>& c, const std::array<const char*, 4>& docs) {
   constexpr bool vertex = std::is_same_v<H, VertexId>;
-  using Range = py::array (*)(const Mesh&, H);
+  using Range = std::vector<std::uint32_t> (*)(const Mesh&, H);
   const Range ranges[] = {
       [](const Mesh& m, H h) { return handles(m.corners(h)); },
       [](const Mesh& m, H h) { return handles(neighbours(m, h)); },
@@ -240,16 +265,16 @@ void bind_ranges(py::class_<MeshRef>& c, const std::array<const char*, 4>& docs)
   }
 }
 
-const ElementMethod<VertexId, py::tuple> vertex_points[] = {
-    {"position", [](const Mesh& m, VertexId v) { return point(m.position(v)); },
+const ElementMethod<VertexId, glm::dvec3> vertex_points[] = {
+    {"position", [](const Mesh& m, VertexId v) { return m.position(v); },
      "The position of vertex v, (x, y, z)."},
-    {"vertex_normal", [](const Mesh& m, VertexId v) { return point(vertex_normal(m, v)); },
+    {"vertex_normal", [](const Mesh& m, VertexId v) { return vertex_normal(m, v); },
      "The area-weighted average normal of the faces around v that are not holes (zero if none)."},
 };
-const ElementMethod<FaceId, py::tuple> face_points[] = {
-    {"face_normal", [](const Mesh& m, FaceId f) { return point(face_normal(m, f)); },
+const ElementMethod<FaceId, glm::dvec3> face_points[] = {
+    {"face_normal", [](const Mesh& m, FaceId f) { return face_normal(m, f); },
      "The unit normal of face f (Newell's method); zero for a degenerate face."},
-    {"face_centroid", [](const Mesh& m, FaceId f) { return point(face_centroid(m, f)); },
+    {"face_centroid", [](const Mesh& m, FaceId f) { return face_centroid(m, f); },
      "The average of the positions of the corners of face f."},
 };
 const ElementMethod<VertexId, bool> vertex_tests[] = {
@@ -271,9 +296,8 @@ const ElementMethod<CornerId, std::optional<std::uint32_t>> corner_edges[] = {
      "The edge leaving corner c along its face, from vertex(c) to vertex(next(c)); None for a point sphere's "
      "corner."},
 };
-const ElementMethod<EdgeId, py::tuple> edge_ends[] = {
-    {"edge_vertices",
-     [](const Mesh& m, EdgeId e) { return py::make_tuple(m.from(e).index(), m.to(e).index()); },
+const ElementMethod<EdgeId, std::pair<std::uint32_t, std::uint32_t>> edge_ends[] = {
+    {"edge_vertices", [](const Mesh& m, EdgeId e) { return std::pair(m.from(e).index(), m.to(e).index()); },
      "The two vertices of edge e, (from, to): side 0 runs from the first to the second."},
 };
 const ElementMethod<FaceId, double> face_areas[] = {
@@ -413,11 +437,15 @@ sphere. Raises PolygonError (element, index) for a face or vertex that is not a 
   c.def_property_readonly(
       "positions",
       [](const MeshRef& self) {
-        const py::object owner = view_owner(self);
-        return self.read([&](const Mesh& mesh) {
-          const std::size_t n = mesh.vertex_capacity();
-          return point_array(n ? &mesh.position(VertexId(0)) : nullptr, n, owner);
-        });
+        const auto first = [](const Mesh& mesh) {
+          return mesh.vertex_capacity() ? &mesh.position(VertexId(0)) : nullptr;
+        };
+        if (!self.live()) {  // nothing changes this mesh: a view of its storage
+          return point_array(first(*self.owned()), self.owned()->vertex_capacity(), view_owner(self));
+        }
+        return owned_points(self.read([&](const Mesh& mesh) {
+          return std::vector<glm::dvec3>(first(mesh), first(mesh) + mesh.vertex_capacity());
+        }));
       },
       "The vertex positions, an (capacity, 3) float64 array indexed by vertex handle (rows of removed "
       "vertices are stale). A read-only view of the mesh's storage, no copy; a copy for a live mesh.");
@@ -426,7 +454,7 @@ sphere. Raises PolygonError (element, index) for a face or vertex that is not a 
     c.def_property_readonly(
         offsets ? "faces_offsets" : "faces_indices",
         [offsets](const MeshRef& self) {
-          return self.read([offsets](const Mesh& mesh) { return polygon_lists(mesh, offsets); });
+          return to_py(self.read([offsets](const Mesh& mesh) { return polygon_lists(mesh, offsets); }));
         },
         offsets ? "The polygons (live faces but holes and point spheres' faces, in handle order): polygon i "
                   "is faces_indices[faces_offsets[i]:faces_offsets[i + 1]]. uint32."
@@ -449,30 +477,34 @@ sphere. Raises PolygonError (element, index) for a face or vertex that is not a 
   c.def(
       "vertices",
       [](const MeshRef& self) {
-        return self.read([](const Mesh& mesh) { return handles(mesh.vertices()); });
+        return to_py(self.read([](const Mesh& mesh) { return handles(mesh.vertices()); }));
       },
       "The live vertex handles, in increasing order (uint32).");
   c.def(
       "edges",
-      [](const MeshRef& self) { return self.read([](const Mesh& mesh) { return handles(mesh.edges()); }); },
+      [](const MeshRef& self) {
+        return to_py(self.read([](const Mesh& mesh) { return handles(mesh.edges()); }));
+      },
       "The live edge handles, in increasing order.");
   c.def(
       "faces",
-      [](const MeshRef& self) { return self.read([](const Mesh& mesh) { return handles(mesh.faces()); }); },
+      [](const MeshRef& self) {
+        return to_py(self.read([](const Mesh& mesh) { return handles(mesh.faces()); }));
+      },
       "The live face handles (holes included), in increasing order.");
   c.def(
       "surface_faces",
       [](const MeshRef& self) {
-        return self.read([](const Mesh& mesh) { return handles(surface_faces(mesh)); });
+        return to_py(self.read([](const Mesh& mesh) { return handles(surface_faces(mesh)); }));
       },
       "The live faces that are not holes, in increasing order.");
   c.def(
       "corners",
       [](const MeshRef& self, std::optional<Index> face) {
-        return self.read([&](const Mesh& mesh) {
+        return to_py(self.read([&](const Mesh& mesh) {
           return face ? handles(mesh.corners(live_handle<FaceId>(mesh, *face, "corners")))
                       : handles(mesh.corners());
-        });
+        }));
       },
       "The corners of a face, from its first corner along next; without a face, every live corner.",
       py::arg("face") = py::none());
@@ -480,12 +512,14 @@ sphere. Raises PolygonError (element, index) for a face or vertex that is not a 
 
   c.def(
       "attributes",
-      [](const MeshRef& self) { return self.read([](const Mesh& mesh) { return attributes(mesh); }); },
+      [](const MeshRef& self) {
+        return attributes(self.read([](const Mesh& mesh) { return mesh.attributes(); }));
+      },
       "The named attributes: a list of {'name', 'kind', 'type', 'default'}, sorted by kind and name.");
   c.def(
       "attribute",
       [](const MeshRef& self, const std::string& kind, const std::string& name) {
-        return self.read([&](const Mesh& mesh) { return attribute(mesh, kind, name); });
+        return attribute_array(self.read([&](const Mesh& mesh) { return attribute(mesh, kind, name); }));
       },
       "The values of a named attribute on the 'vertex', 'edge', 'face' or 'corner' elements, indexed by "
       "handle (capacity rows): bool, int32, float64, or (capacity, 3) float64 for points. A copy.",

@@ -319,7 +319,29 @@ py::array view_or_copy(const T* data, std::vector<py::ssize_t> shape, std::vecto
   py::detail::array_proxy(view.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return view;
 }
+
+// An array over the vector's storage, kept alive by a capsule that owns the vector.
+template <class T>
+py::array owning(std::vector<T> values, std::vector<py::ssize_t> shape, std::vector<py::ssize_t> strides,
+                 const py::dtype& dtype) {
+  if (values.empty()) return py::array(dtype, std::move(shape), std::move(strides));
+  auto* keep = new std::vector<T>(std::move(values));
+  const py::capsule owner(keep, [](void* p) { delete static_cast<std::vector<T>*>(p); });
+  return py::array(dtype, std::move(shape), std::move(strides), keep->data(), owner);
+}
+
 }  // namespace
+
+py::array owned_array(std::vector<std::uint32_t> values) {
+  const auto n = py::ssize_t(values.size());
+  return owning(std::move(values), {n}, {py::ssize_t(sizeof(std::uint32_t))}, py::dtype::of<std::uint32_t>());
+}
+
+py::array owned_points(std::vector<glm::dvec3> points) {
+  const auto n = py::ssize_t(points.size());
+  return owning(std::move(points), {n, 3}, {py::ssize_t(sizeof(glm::dvec3)), py::ssize_t(sizeof(double))},
+                py::dtype::of<double>());
+}
 
 py::array point_array(const glm::dvec3* points, std::size_t n, py::handle owner) {
   static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "glm::dvec3 is three packed doubles");
