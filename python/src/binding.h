@@ -115,11 +115,9 @@ std::optional<std::uint32_t> handle_or_none(H h) {
 void read_indexed_lists(IndexedLists& out, py::handle positions, py::handle lists, const char* what,
                         void (*bad_index)(std::size_t list, const std::string& message));
 
-/// An (n, 3) float64 NumPy array viewing `n` points, read-only, that keeps `owner` alive; a copy when owner
-/// is None.
-py::array point_array(const glm::dvec3* points, std::size_t n, py::handle owner);
-/// A uint32 NumPy array viewing (or, when owner is None, copying) `n` values.
-py::array index_array(const std::uint32_t* values, std::size_t n, py::handle owner);
+/// Read-only NumPy views, (n, 3) float64 of `n` points and uint32 of `n` values, that keep `owner` alive.
+py::array point_view(const glm::dvec3* points, std::size_t n, py::handle owner);
+py::array index_view(const std::uint32_t* values, std::size_t n, py::handle owner);
 /// NumPy arrays that take over `values` (no copy), writeable: uint32, and (n, 3) float64.
 py::array owned_array(std::vector<std::uint32_t> values);
 py::array owned_points(std::vector<glm::dvec3> points);

@@ -39,20 +39,20 @@ views.)doc");
   c.def_property_readonly(
       "positions",
       [](const ComplexRef& self) {
-        return point_array(self.complex->positions.data(), self.complex->positions.size(),
-                           complex_owner(self));
+        return point_view(self.complex->positions.data(), self.complex->positions.size(),
+                          complex_owner(self));
       },
       "The vertex positions, an (n, 3) float64 read-only view.");
   c.def_property_readonly(
       "offsets",
       [](const ComplexRef& self) {
-        return index_array(self.complex->offsets.data(), self.complex->offsets.size(), complex_owner(self));
+        return index_view(self.complex->offsets.data(), self.complex->offsets.size(), complex_owner(self));
       },
       "Where each cell starts in indices (one more than the cells), uint32, a read-only view.");
   c.def_property_readonly(
       "indices",
       [](const ComplexRef& self) {
-        return index_array(self.complex->indices.data(), self.complex->indices.size(), complex_owner(self));
+        return index_view(self.complex->indices.data(), self.complex->indices.size(), complex_owner(self));
       },
       "The cells' vertex indices, uint32, a read-only view.");
   c.def_property_readonly(

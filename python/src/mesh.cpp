@@ -6,6 +6,7 @@
 #include <array>
 #include <cstring>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <variant>
 
@@ -441,7 +442,7 @@ sphere. Raises PolygonError (element, index) for a face or vertex that is not a 
           return mesh.vertex_capacity() ? &mesh.position(VertexId(0)) : nullptr;
         };
         if (!self.live()) {  // nothing changes this mesh: a view of its storage
-          return point_array(first(*self.owned()), self.owned()->vertex_capacity(), view_owner(self));
+          return point_view(first(*self.owned()), self.owned()->vertex_capacity(), view_owner(self));
         }
         return owned_points(self.read([&](const Mesh& mesh) {
           return std::vector<glm::dvec3>(first(mesh), first(mesh) + mesh.vertex_capacity());
@@ -465,39 +466,28 @@ sphere. Raises PolygonError (element, index) for a face or vertex that is not a 
       [](const MeshRef& self) {
         PolygonSoup soup = self.read_without_gil([](const Mesh& mesh) { return to_polygons(mesh); });
         return py::make_tuple(
-            point_array(soup.positions.data(), soup.positions.size(), py::none()),
-            py::make_tuple(index_array(soup.offsets.data(), soup.offsets.size(), py::none()),
-                           index_array(soup.indices.data(), soup.indices.size(), py::none())));
+            owned_points(std::move(soup.positions)),
+            py::make_tuple(owned_array(std::move(soup.offsets)), owned_array(std::move(soup.indices))));
       },
       "(positions, (offsets, indices)): the polygons as a polygon file holds them, vertices renumbered "
       "densely (Mesh.from_arrays(*mesh.to_arrays()) rebuilds the mesh). Raises TopologyError for a 2-gon or "
-      "a double "
-      "edge, which a polygon list cannot hold.");
+      "a double edge, which a polygon list cannot hold.");
 
-  c.def(
-      "vertices",
-      [](const MeshRef& self) {
-        return to_py(self.read([](const Mesh& mesh) { return handles(mesh.vertices()); }));
-      },
-      "The live vertex handles, in increasing order (uint32).");
-  c.def(
-      "edges",
-      [](const MeshRef& self) {
-        return to_py(self.read([](const Mesh& mesh) { return handles(mesh.edges()); }));
-      },
-      "The live edge handles, in increasing order.");
-  c.def(
-      "faces",
-      [](const MeshRef& self) {
-        return to_py(self.read([](const Mesh& mesh) { return handles(mesh.faces()); }));
-      },
-      "The live face handles (holes included), in increasing order.");
-  c.def(
-      "surface_faces",
-      [](const MeshRef& self) {
-        return to_py(self.read([](const Mesh& mesh) { return handles(surface_faces(mesh)); }));
-      },
-      "The live faces that are not holes, in increasing order.");
+  using AllOfKind = std::vector<std::uint32_t> (*)(const Mesh&);
+  const std::tuple<const char*, AllOfKind, const char*> all_of_kind[] = {
+      {"vertices", [](const Mesh& m) { return handles(m.vertices()); },
+       "The live vertex handles, in increasing order."},
+      {"edges", [](const Mesh& m) { return handles(m.edges()); },
+       "The live edge handles, in increasing order."},
+      {"faces", [](const Mesh& m) { return handles(m.faces()); },
+       "The live face handles (holes included), in increasing order."},
+      {"surface_faces", [](const Mesh& m) { return handles(surface_faces(m)); },
+       "The live faces that are not holes, in increasing order."},
+  };
+  for (const auto& [name, all, doc] : all_of_kind) {
+    c.def(
+        name, [all](const MeshRef& self) { return to_py(self.read(all)); }, doc);
+  }
   c.def(
       "corners",
       [](const MeshRef& self, std::optional<Index> face) {

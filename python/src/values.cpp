@@ -307,15 +307,10 @@ void read_indexed_lists(IndexedLists& out, py::handle positions, py::handle list
 
 namespace {
 template <class T>
-py::array view_or_copy(const T* data, std::vector<py::ssize_t> shape, std::vector<py::ssize_t> strides,
-                       py::handle owner) {
-  if (owner.is_none()) {
-    py::array_t<T> copy(shape);
-    if (copy.size() != 0) std::memcpy(copy.mutable_data(), data, sizeof(T) * std::size_t(copy.size()));
-    return copy;
-  }
+py::array read_only_view(const T* data, std::vector<py::ssize_t> shape, std::vector<py::ssize_t> strides,
+                         py::handle owner) {
   py::array view(py::dtype::of<T>(), std::move(shape), std::move(strides), data, owner);
-  // Read-only: the storage belongs to a mesh that nothing changes.
+  // Read-only: the storage belongs to a mesh or complex that nothing changes.
   py::detail::array_proxy(view.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return view;
 }
@@ -343,14 +338,14 @@ py::array owned_points(std::vector<glm::dvec3> points) {
                 py::dtype::of<double>());
 }
 
-py::array point_array(const glm::dvec3* points, std::size_t n, py::handle owner) {
+py::array point_view(const glm::dvec3* points, std::size_t n, py::handle owner) {
   static_assert(sizeof(glm::dvec3) == 3 * sizeof(double), "glm::dvec3 is three packed doubles");
-  return view_or_copy(reinterpret_cast<const double*>(points), {py::ssize_t(n), 3},
-                      {py::ssize_t(sizeof(glm::dvec3)), py::ssize_t(sizeof(double))}, owner);
+  return read_only_view(reinterpret_cast<const double*>(points), {py::ssize_t(n), 3},
+                        {py::ssize_t(sizeof(glm::dvec3)), py::ssize_t(sizeof(double))}, owner);
 }
 
-py::array index_array(const std::uint32_t* values, std::size_t n, py::handle owner) {
-  return view_or_copy(values, {py::ssize_t(n)}, {py::ssize_t(sizeof(std::uint32_t))}, owner);
+py::array index_view(const std::uint32_t* values, std::size_t n, py::handle owner) {
+  return read_only_view(values, {py::ssize_t(n)}, {py::ssize_t(sizeof(std::uint32_t))}, owner);
 }
 
 }  // namespace dlfl::python
