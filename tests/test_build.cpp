@@ -146,6 +146,13 @@ TEST_CASE("build: every malformed soup is rejected with the offending element") 
   }
 }
 
+TEST_CASE("build: offsets that decrease are refused before a face is read") {
+  PolygonSoup s = test::tetrahedron_soup();  // offsets 0 3 6 9 12
+  REQUIRE(s.offsets.size() == 5);
+  s.offsets[2] = 10;  // face 1 would run from 3 to 10, face 2 from 10 back to 9
+  CHECK_THROWS_WITH_AS(build_mesh(s), doctest::Contains("decrease at face 2"), InvalidArgument);
+}
+
 TEST_CASE("build: to_polygons gives back the soup's faces and refuses what a soup cannot hold") {
   PolygonSoup s = test::grid_soup(2, 2);
   Mesh m = build_mesh(s);

@@ -233,6 +233,24 @@ TEST_CASE("kernel: delete_edge merges two faces and its inverse splits them back
   CHECK_THROWS_AS(m.delete_edge(EdgeId(12)), InvalidArgument);
 }
 
+TEST_CASE("kernel: is_alive by element kind agrees with the typed handles") {
+  Mesh m = test::cube();
+  // Two quads merge: edge 0, one face and two corners become tombstones.
+  const DeleteEdgeResult r = m.delete_edge(EdgeId(0));
+  REQUIRE(r.removed_face.valid());
+  for (ElementKind kind : {ElementKind::vertex, ElementKind::edge, ElementKind::face, ElementKind::corner}) {
+    CAPTURE(to_string(kind));
+    std::size_t live = 0;
+    for (std::uint32_t i = 0; i < m.capacity(kind) + 3; ++i) live += m.is_alive(kind, i);
+    const std::size_t expected[] = {8, 11, 5, 22};  // V, E - 1, F - 1, C - 2
+    CHECK(live == expected[std::size_t(kind)]);
+  }
+  CHECK_FALSE(m.is_alive(ElementKind::edge, 0));
+  CHECK_FALSE(m.is_alive(ElementKind::face, r.removed_face.index()));
+  CHECK(m.is_alive(ElementKind::corner, 23) == m.is_alive(CornerId(23)));
+  CHECK_FALSE(m.is_alive(ElementKind::vertex, 0xFFFFFFFFu));
+}
+
 TEST_CASE("kernel: delete_vertex refuses a vertex with edges") {
   Mesh m = test::cube();
   CHECK_THROWS_AS(m.delete_vertex(VertexId(0)), TopologyError);

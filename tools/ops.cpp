@@ -3,33 +3,16 @@
 #include <iostream>
 #include <string>
 
-#include <dlfl/detail/enum_names.h>
 #include <dlfl/operations/operation.h>
+#include <dlfl/operations/spec_json.h>
 #include "commands.h"
 #include "spec_listing.h"
 
 namespace dlfl::tool {
 namespace {
 
-const char* kind_name(OperationSpec::Kind kind) {
-  static constexpr const char* names[] = {"edit", "replace", "history"};
-  static_assert(std::size(names) == std::size_t(OperationSpec::Kind::history) + 1,
-                "a name per enumerator, in order");
-  return detail::name_at(kind, names, "?");
-}
-
-nlohmann::ordered_json op_json(const OperationSpec& op) {
-  nlohmann::ordered_json params = nlohmann::ordered_json::array();
-  for (const auto& p : op.params) params.push_back(param_json(p));
-  return {{"name", op.name},
-          {"kind", kind_name(op.kind)},
-          {"doc", op.doc},
-          {"counts", op.counts},
-          {"params", params}};
-}
-
 void print(const OperationSpec& op) {
-  std::cout << op.name << "  (" << kind_name(op.kind) << ")  " << op.doc << "\n";
+  std::cout << op.name << "  (" << to_string(op.kind) << ")  " << op.doc << "\n";
   if (!op.counts.empty()) std::cout << "  counts: " << op.counts << "\n";
   std::cout << param_lines(op.params);
 }
@@ -46,16 +29,14 @@ Action add_ops(CLI::App& app) {
     if (!name->empty()) {
       const OperationSpec& op = find_operation(*name);  // unknown: a usage error with a suggestion
       if (*json) {
-        std::cout << op_json(op).dump(1) << "\n";
+        std::cout << to_json(op, 1) << "\n";
       } else {
         print(op);
       }
       return ok;
     }
     if (*json) {
-      nlohmann::ordered_json all = nlohmann::ordered_json::array();
-      for (const auto& op : operations()) all.push_back(op_json(op));
-      std::cout << all.dump(1) << "\n";
+      std::cout << operations_json(1) << "\n";
       return ok;
     }
     bool first = true;

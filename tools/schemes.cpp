@@ -7,18 +7,13 @@
 #include <vector>
 
 #include <dlfl/errors.h>
+#include <dlfl/operations/spec_json.h>
 #include <dlfl/schemes/scheme_registry.h>
 #include "commands.h"
 #include "spec_listing.h"
 
 namespace dlfl::tool {
 namespace {
-
-nlohmann::ordered_json scheme_json(const SchemeSpec& s) {
-  nlohmann::ordered_json params = nlohmann::ordered_json::array();
-  for (const ParamSpec& p : s.params) params.push_back(param_json(p));
-  return {{"name", s.name}, {"doc", s.doc}, {"params", std::move(params)}};
-}
 
 void print_scheme(const SchemeSpec& s) {
   std::cout << s.name << ": " << s.doc << "\n" << param_lines(s.params);
@@ -51,7 +46,7 @@ Action add_schemes(CLI::App& app) {
     }
     if (a->json) {
       nlohmann::ordered_json list = nlohmann::ordered_json::array();
-      for (const SchemeSpec* s : shown) list.push_back(scheme_json(*s));
+      for (const SchemeSpec* s : shown) list.push_back(nlohmann::ordered_json::parse(to_json(*s)));
       std::cout << list.dump(2) << "\n";
       return ok;
     }

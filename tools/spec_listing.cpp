@@ -1,16 +1,9 @@
 #include "spec_listing.h"
 
 #include <algorithm>
-#include <cmath>
-
-#include <dlfl/io/json_mesh.h>
 
 namespace dlfl::tool {
 namespace {
-
-nlohmann::ordered_json bound_json(double x) {
-  return std::isinf(x) ? nlohmann::ordered_json() : nlohmann::ordered_json(x);
-}
 
 // "default 0.5", "default 'centroid'", "optional: a0 + a1/N for an N-sided face", "required".
 std::string default_text(const ParamSpec& p) {
@@ -36,24 +29,6 @@ std::string allowed_text(const ParamSpec& p) {
 }
 
 }  // namespace
-
-nlohmann::ordered_json param_json(const ParamSpec& p) {
-  nlohmann::ordered_json j;
-  j["name"] = p.name;
-  j["type"] = std::string(to_string(p.type));
-  j["default"] = value_to_json(p.default_value);
-  if (!p.default_doc.empty()) j["default_doc"] = p.default_doc;
-  if (!p.range_text().empty()) {
-    j["range"] = {{"min", bound_json(p.min)},
-                  {"max", bound_json(p.max)},
-                  {"min_open", p.min_open || std::isinf(p.min)},
-                  {"max_open", p.max_open || std::isinf(p.max)}};
-  }
-  j["keywords"] = p.keywords;
-  j["doc"] = p.doc;
-  j["optional"] = p.is_optional;
-  return j;
-}
 
 std::string param_lines(std::span<const ParamSpec> specs) {
   if (specs.empty()) return "  (no parameters)\n";

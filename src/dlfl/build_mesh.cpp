@@ -53,6 +53,8 @@ Mesh MeshBuilder::build(const PolygonSoup& soup, const SoupNumbering& numbering)
       fail.vertex_fails(i, "coordinate is not finite");
   }
   for (std::size_t f = 0; f < nf; ++f) {
+    if (soup.offsets[f + 1] < soup.offsets[f])
+      throw InvalidArgument("build_mesh: face offsets decrease at face " + std::to_string(f));
     auto face = soup.face(f);
     if (face.size() < 3)
       fail.face(f, "has " + std::to_string(face.size()) + " vertices; at least 3 are needed");

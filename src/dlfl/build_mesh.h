@@ -43,7 +43,9 @@ struct SoupNumbering {
 ///
 /// Throws PolygonError for: a non-finite position, a face with fewer than 3 vertices, an index out of range,
 /// a vertex used twice in a row, a directed edge used twice (an edge shared by more than two faces, or two
-/// faces with opposite orientation), and a non-manifold vertex (its faces form more than one fan).
+/// faces with opposite orientation), and a non-manifold vertex (its faces form more than one fan); and
+/// InvalidArgument for offsets that do not describe the index list (not starting at 0, not ending at its
+/// size, or decreasing).
 Mesh build_mesh(const PolygonSoup& soup, const SoupNumbering& numbering = {});
 
 /// The polygons of a mesh for writing: the open surface's vertices (see `statistics`: every live vertex but

@@ -3,12 +3,14 @@
 // includes also stands alone; see docs/architecture.md for which floor each belongs to.
 
 #include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/analysis/mesh_info.h>
 #include <dlfl/analysis/polyhedron_angles.h>
 #include <dlfl/attribute_types.h>
 #include <dlfl/attributes.h>
 #include <dlfl/build_mesh.h>
 #include <dlfl/cells/cell_average.h>
 #include <dlfl/cells/cell_complex.h>
+#include <dlfl/cells/cell_info.h>
 #include <dlfl/cells/cell_io.h>
 #include <dlfl/cells/cell_obj.h>
 #include <dlfl/cells/convert.h>
@@ -65,6 +67,7 @@
 #include <dlfl/operations/rind.h>
 #include <dlfl/operations/sierpinski.h>
 #include <dlfl/operations/smooth.h>
+#include <dlfl/operations/spec_json.h>
 #include <dlfl/operations/spheralize.h>
 #include <dlfl/operations/splice_corners.h>
 #include <dlfl/operations/stellate_face.h>

@@ -57,6 +57,20 @@ std::uint32_t Mesh::capacity(ElementKind kind) const {
   return corner_capacity();
 }
 
+bool Mesh::is_alive(ElementKind kind, std::uint32_t index) const {
+  switch (kind) {
+    case ElementKind::vertex:
+      return is_alive(VertexId(index));
+    case ElementKind::edge:
+      return is_alive(EdgeId(index));
+    case ElementKind::face:
+      return is_alive(FaceId(index));
+    case ElementKind::corner:
+      break;
+  }
+  return is_alive(CornerId(index));
+}
+
 void Mesh::reserve(std::size_t vertices, std::size_t edges, std::size_t faces, std::size_t corners) {
   positions_.reserve(vertices);
   vertex_corner_.reserve(vertices);

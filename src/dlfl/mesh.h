@@ -165,6 +165,9 @@ class Mesh {
   bool is_alive(CornerId c) const {
     return c.index() < corner_capacity() && corners_[c.index()].vertex.valid();
   }
+  /// The same for the element of one kind at slot `index`, for code that names elements by kind (logs,
+  /// bindings). Safe on any index.
+  bool is_alive(ElementKind kind, std::uint32_t index) const;
 
   // ---- element data
   // ------------------------------------------------------------------------------------------

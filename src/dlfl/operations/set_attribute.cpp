@@ -17,20 +17,6 @@ ElementKind element_kind(const std::string& element) {
   return ElementKind::corner;
 }
 
-bool element_alive(const Mesh& m, ElementKind kind, std::uint32_t i) {
-  switch (kind) {
-    case ElementKind::vertex:
-      return m.is_alive(VertexId(i));
-    case ElementKind::edge:
-      return m.is_alive(EdgeId(i));
-    case ElementKind::face:
-      return m.is_alive(FaceId(i));
-    case ElementKind::corner:
-      return m.is_alive(CornerId(i));
-  }
-  return false;
-}
-
 // The attribute's type: the existing attribute's, else the one asked for, else from the value's size.
 AttributeType value_type(const Mesh& m, const Params& p) {
   const ElementKind kind = element_kind(p.text("element"));
@@ -108,7 +94,7 @@ std::vector<OperationSpec> attribute_operation_specs() {
       [](const Mesh& m, Params& p) {
         const auto index = p.integer("index");
         if (index >= std::int64_t(VertexId::invalid_index) ||
-            !element_alive(m, element_kind(p.text("element")), static_cast<std::uint32_t>(index))) {
+            !m.is_alive(element_kind(p.text("element")), static_cast<std::uint32_t>(index))) {
           throw ParameterError(
               "set_attribute: parameter index = " + std::to_string(index) + ": no such " + p.text("element"),
               "index");
