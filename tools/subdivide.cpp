@@ -106,9 +106,10 @@ Action add_subdivide(CLI::App& app) {
     std::vector<std::string> params;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("IN", a->files.in,
-                  "Input mesh (.obj, .off, .ply, .json), or cell complex (.vtk, .obj with p or l lines) for "
-                  "-s mlca")
+  cmd->add_option(
+         "IN", a->files.in,
+         "Input mesh (.obj, .off, .ply, .stl, .json), or cell complex (.vtk, .obj with p or l lines) for "
+         "-s mlca")
       ->required();
   std::string names;
   for (const auto& n : scheme_names()) names += (names.empty() ? "" : ", ") + n;
@@ -118,7 +119,7 @@ Action add_subdivide(CLI::App& app) {
                   "Scheme parameter NAME=VALUE (repeatable), read as the parameter's type: t=0.5, "
                   "center=0,0,0, random=true, pattern=H4P4 ('dlfl schemes NAME' lists them)");
   add_output_options(cmd, a->files, "Output mesh (format by extension)",
-                     "Write PLY or VTK as ASCII instead of binary");
+                     "Write PLY, STL or VTK as ASCII instead of binary");
   return [a] {
     check_editor_files(a->files);
     if (is_cell_complex_file(a->files.in)) return subdivide_cells(*a);

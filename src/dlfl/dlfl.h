@@ -28,12 +28,14 @@
 #include <dlfl/history/oplog.h>
 #include <dlfl/indexed_lists.h>
 #include <dlfl/io/atomic_file.h>
+#include <dlfl/io/gltf.h>
 #include <dlfl/io/json_mesh.h>
 #include <dlfl/io/mesh_io.h>
 #include <dlfl/io/obj.h>
 #include <dlfl/io/off.h>
 #include <dlfl/io/parsed_polygons.h>
 #include <dlfl/io/ply.h>
+#include <dlfl/io/stl.h>
 #include <dlfl/mesh.h>
 #include <dlfl/mesh_arrays.h>
 #include <dlfl/mesh_assembler.h>
