@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -35,7 +36,7 @@ struct RenderArgs {
   CLI::Option *azimuth_option, *elevation_option, *edges_option;
 };
 
-// "WxH", each from 1 to 16384.
+// "WxH", each from 1 to 16384, at most 2^26 pixels (the rasterizer's buffers take 32 bytes a pixel).
 std::pair<int, int> parse_size(const std::string& text) {
   const std::size_t x = text.find('x');
   int w = 0, h = 0;
@@ -43,8 +44,9 @@ std::pair<int, int> parse_size(const std::string& text) {
   const bool good = x != std::string::npos &&
                     std::from_chars(text.data(), text.data() + x, w).ptr == text.data() + x &&
                     std::from_chars(text.data() + x + 1, end, h).ptr == end && x > 0 && x + 1 < text.size();
-  if (!good || w < 1 || h < 1 || w > 16384 || h > 16384) {
-    throw UsageError("--size: expected WxH with W and H from 1 to 16384, got '" + text + "'");
+  if (!good || w < 1 || h < 1 || w > 16384 || h > 16384 || std::int64_t(w) * h > (std::int64_t(1) << 26)) {
+    throw UsageError("--size: expected WxH with W and H from 1 to 16384 and at most 2^26 pixels, got '" +
+                     text + "'");
   }
   return {w, h};
 }

@@ -42,10 +42,10 @@ bool encode(png_structp png, png_infop info, const Image& image, const png_bytep
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width()), static_cast<png_uint_32>(image.height()),
                8, alpha ? PNG_COLOR_TYPE_RGBA : PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  // Pictures of meshes are large flat areas: the Sub and Up filters and a middle compression level give
-  // files nearly as small as the slowest settings in a fraction of the time.
+  // Pictures of meshes are large flat areas: the Sub and Up filters and zlib level 2 give files about a
+  // third larger than level 6 in a third of the time (bench_render: 0.09 s against 0.33 s at 1600x1200).
   png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB | PNG_FILTER_UP);
-  png_set_compression_level(png, 6);
+  png_set_compression_level(png, 2);
   png_write_info(png, info);
   png_write_image(png, const_cast<png_bytepp>(rows));
   png_write_end(png, info);

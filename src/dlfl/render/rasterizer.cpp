@@ -117,13 +117,14 @@ class Raster {
     constexpr double limit = double(1 << 29);  // keeps edge functions far inside 64 bits
     for (std::size_t v = 0; v < n; ++v) {
       const glm::dvec3 p = camera_.project(scene_.positions[v]);
-      xy_[v] = {std::llround(std::clamp(p.x * samples * sub, -limit, limit)),
-                std::llround(std::clamp(p.y * samples * sub, -limit, limit))};
+      // Clamped (a NaN too) so that rounding is defined and edge functions stay within 64 bits.
+      auto fixed = [&](double c) { return std::llround(c > -limit ? (c < limit ? c : limit) : -limit); };
+      xy_[v] = {fixed(p.x * samples * sub), fixed(p.y * samples * sub)};
       z_[v] = p.z;
-      low = std::min(low, p.z), high = std::max(high, p.z);
+      if (std::isfinite(p.z)) low = std::min(low, p.z), high = std::max(high, p.z);
     }
     // Strokes pass where they are this close behind the surface, besides the faces' slope offset.
-    tolerance_ = n > 0 ? 1e-5 * (high - low) + 1e-12 : 0;
+    tolerance_ = high >= low ? 1e-5 * (high - low) + 1e-12 : 0;
   }
 
   void vertex_normals() {
