@@ -173,8 +173,15 @@ class Raster {
         smooth_fan(ids, n, base, back);
         continue;
       }
-      const std::uint32_t color =
-          pack(lit(base, light_intensity(camera_.to_view(polygon_newell(scene_, f)))));
+      // Flat: the face's normal; under smooth shading a face the fan cannot fill takes the mean of its
+      // vertex normals, which matches its neighbours better than its own normal.
+      glm::dvec3 normal(0.0);
+      if (normals_.empty()) {
+        normal = camera_.to_view(polygon_newell(scene_, f));
+      } else {
+        for (std::uint32_t k = 0; k < n; ++k) normal += normals_[ids[k]];
+      }
+      const std::uint32_t color = pack(lit(base, light_intensity(normal)));
       if (fan) {
         for (std::uint32_t k = 1; k + 1 < n; ++k) flat_triangle(ids[0], ids[k], ids[k + 1], color);
       } else {
