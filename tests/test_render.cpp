@@ -328,6 +328,13 @@ TEST_CASE("render: a contact sheet puts its pictures side by side above their ca
   CHECK(sheet.at(119, 29) == Rgba{255, 0, 0, 255});
   CHECK(sheet.at(119, 30) == Rgba{255, 255, 255, 255});
   CHECK_THROWS_AS(contact_sheet(pictures, std::vector<std::string>{"M0"}, {}), InvalidArgument);
+  // A caption far wider than its picture is cut at the picture's sides: the other captions' strips stay
+  // background.
+  const std::vector<std::string> long_first{std::string(40, 'W'), "", ""};
+  const Image cut = contact_sheet(pictures, long_first, {255, 255, 255, 255});
+  for (int y = 30; y < cut.height(); ++y) {
+    for (int x = 40; x < 120; ++x) REQUIRE(cut.at(x, y) == Rgba{255, 255, 255, 255});
+  }
 }
 
 #ifdef DLFL_TOOL

@@ -44,11 +44,14 @@ Image contact_sheet(std::span<const Image> pictures, std::span<const std::string
   for (int k = 0; k < count; ++k) {
     const int x = (k % columns) * w, y = (k / columns) * (h + strip);
     sheet.paste(pictures[k], x, y);
-    int line_y = y + h + 2 * scale;
+    // Drawn on a strip of the picture's width, so that a long caption is cut at its own picture's sides.
+    Image caption(w, strip, background);
+    int line_y = 2 * scale;
     for (std::string_view line : lines_of(captions[k])) {
-      draw_text(sheet, x + (w - text_width(line, scale)) / 2, line_y, line, text_color, scale);
+      draw_text(caption, (w - text_width(line, scale)) / 2, line_y, line, text_color, scale);
       line_y += line_height;
     }
+    sheet.paste(caption, x, y + h);
   }
   return sheet;
 }

@@ -74,6 +74,7 @@ void Image::paste(const Image& source, int x, int y) {
 
 void Image::fill(int x, int y, int w, int h, Rgba color) {
   const int x0 = std::max(0, x), x1 = std::min(width_, x + w);
+  if (x1 <= x0) return;  // wholly left or right of the image
   for (int row = std::max(0, y); row < std::min(height_, y + h); ++row) {
     std::fill(pixels_.begin() + static_cast<std::ptrdiff_t>(row) * width_ + x0,
               pixels_.begin() + static_cast<std::ptrdiff_t>(row) * width_ + x1, color);
