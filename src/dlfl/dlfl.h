@@ -80,6 +80,16 @@
 #include <dlfl/operations/wireframe.h>
 #include <dlfl/parameters.h>
 #include <dlfl/polygon_soup.h>
+#include <dlfl/render/camera.h>
+#include <dlfl/render/colors.h>
+#include <dlfl/render/contact_sheet.h>
+#include <dlfl/render/font.h>
+#include <dlfl/render/image.h>
+#include <dlfl/render/png.h>
+#include <dlfl/render/rasterizer.h>
+#include <dlfl/render/scene.h>
+#include <dlfl/render/shading.h>
+#include <dlfl/render/svg.h>
 #include <dlfl/schemes/catmull_clark.h>
 #include <dlfl/schemes/doo_sabin.h>
 #include <dlfl/schemes/dual.h>
