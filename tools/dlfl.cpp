@@ -36,6 +36,7 @@ int main(int argc, char** argv) {
   add(add_ops);
   add(add_edit);
   add(add_schemes);
+  add(add_view);
 
   try {
     app.parse(argc, argv);
