@@ -16,41 +16,57 @@ namespace dlfl::tool {
 
 namespace {
 
-// Little-endian bytes of 32-bit values, the layout of the typed arrays the page decodes.
-template <class T>
-std::string little_endian_bytes(const std::vector<T>& values) {
-  std::string bytes;
-  bytes.reserve(values.size() * sizeof(T));
-  for (const T value : values) {
-    std::uint32_t bits;
-    if constexpr (sizeof(T) == 1) {
-      bytes.push_back(static_cast<char>(value));
-      continue;
-    } else {
-      bits = std::bit_cast<std::uint32_t>(value);
+// Base64 of little-endian bytes, written as they come: the typed arrays the page decodes. Its alphabet needs
+// no escaping in JSON or HTML, so the arrays go to the page without a copy.
+class Base64Writer {
+ public:
+  explicit Base64Writer(std::ostream& out) : out_(out) {}
+  template <class T>
+  void values(const std::vector<T>& values) {
+    for (const T value : values) {
+      if constexpr (sizeof(T) == 1) {
+        byte(value);
+      } else {
+        const auto bits = std::bit_cast<std::uint32_t>(value);
+        for (int shift = 0; shift < 32; shift += 8) byte(static_cast<std::uint8_t>(bits >> shift));
+      }
     }
-    for (int shift = 0; shift < 32; shift += 8) bytes.push_back(static_cast<char>((bits >> shift) & 0xff));
   }
-  return bytes;
-}
+  // Pads the last group and writes what is held.
+  void finish() {
+    if (held_ > 0) {
+      for (int k = held_; k < 3; ++k) group_[k] = 0;
+      emit(held_ + 1);
+    }
+    out_.write(text_.data(), static_cast<std::streamsize>(text_.size()));
+    text_.clear();
+  }
 
-std::string base64(const std::string& bytes) {
-  static constexpr char digits[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string text;
-  text.reserve((bytes.size() + 2) / 3 * 4);
-  for (std::size_t i = 0; i < bytes.size(); i += 3) {
-    const std::size_t n = std::min<std::size_t>(3, bytes.size() - i);
-    std::uint32_t group = 0;
-    for (std::size_t k = 0; k < 3; ++k)
-      group = group << 8 | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
-    for (std::size_t k = 0; k < 4; ++k) text.push_back(k <= n ? digits[(group >> (18 - 6 * k)) & 63] : '=');
+ private:
+  void byte(std::uint8_t b) {
+    group_[held_++] = b;
+    if (held_ == 3) emit(4);
   }
-  return text;
-}
+  void emit(int digits) {
+    static constexpr char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const std::uint32_t bits = std::uint32_t{group_[0]} << 16 | std::uint32_t{group_[1]} << 8 | group_[2];
+    for (int k = 0; k < 4; ++k) text_.push_back(k < digits ? alphabet[(bits >> (18 - 6 * k)) & 63] : '=');
+    held_ = 0;
+    if (text_.size() >= (1u << 16)) finish();
+  }
+  std::ostream& out_;
+  std::uint8_t group_[3] = {0, 0, 0};
+  int held_ = 0;
+  std::string text_;
+};
 
 template <class T>
-std::string encoded(const std::vector<T>& values) {
-  return base64(little_endian_bytes(values));
+void write_array(std::ostream& out, const char* name, const std::vector<T>& values) {
+  out << ",\"" << name << "\":\"";
+  Base64Writer base64(out);
+  base64.values(values);
+  base64.finish();
+  out << '"';
 }
 
 std::string hex_color(Rgb8 c) {
@@ -152,25 +168,6 @@ void ViewerPage::add(const Mesh& mesh, std::string label) {
 }
 
 void ViewerPage::write(std::ostream& out, const std::string& title) const {
-  nlohmann::json data;
-  data["title"] = title;
-  data["steps"] = nlohmann::json::array();
-  for (const ViewerStep& step : steps_) {
-    nlohmann::json legend = nlohmann::json::array();
-    for (const auto& [sides, count] : step.face_sizes)
-      legend.push_back({sides, count, hex_color(face_size_color(sides))});
-    data["steps"].push_back({{"label", step.label},
-                             {"counts", step.counts},
-                             {"faces", step.faces},
-                             {"bbox",
-                              {{step.bbox_min.x, step.bbox_min.y, step.bbox_min.z},
-                               {step.bbox_max.x, step.bbox_max.y, step.bbox_max.z}}},
-                             {"face_sizes", legend},
-                             {"positions", encoded(step.positions)},
-                             {"triangles", encoded(step.triangles)},
-                             {"triangle_colors", encoded(step.triangle_colors)},
-                             {"edges", encoded(step.edges)}});
-  }
   // The template holds the title's marker, then the data's.
   const std::string_view page = viewer_template;
   const std::string_view title_marker = "@DLFL_TITLE@", data_marker = "@DLFL_DATA@";
@@ -179,8 +176,29 @@ void ViewerPage::write(std::ostream& out, const std::string& title) const {
     throw Error("the viewer template lacks its markers");  // a build fault: viewer.html was edited wrongly
   const std::size_t after_title = title_at + title_marker.size();
   out << page.substr(0, title_at) << html_escaped(title) << page.substr(after_title, data_at - after_title);
-  write_script_safe(out, data.dump());
-  out << page.substr(data_at + data_marker.size());
+  // The data: the small fields through nlohmann-json, the arrays written straight after them.
+  write_script_safe(out, "{\"title\":" + nlohmann::json(title).dump() + ",\"steps\":[");
+  for (std::size_t k = 0; k < steps_.size(); ++k) {
+    const ViewerStep& step = steps_[k];
+    nlohmann::json legend = nlohmann::json::array();
+    for (const auto& [sides, count] : step.face_sizes)
+      legend.push_back({sides, count, hex_color(face_size_color(sides))});
+    const nlohmann::json fields = {{"label", step.label},
+                                   {"counts", step.counts},
+                                   {"faces", step.faces},
+                                   {"bbox",
+                                    {{step.bbox_min.x, step.bbox_min.y, step.bbox_min.z},
+                                     {step.bbox_max.x, step.bbox_max.y, step.bbox_max.z}}},
+                                   {"face_sizes", legend}};
+    const std::string text = fields.dump();
+    write_script_safe(out, std::string(k > 0 ? "," : "") + text.substr(0, text.size() - 1));  // without its }
+    write_array(out, "positions", step.positions);
+    write_array(out, "triangles", step.triangles);
+    write_array(out, "triangle_colors", step.triangle_colors);
+    write_array(out, "edges", step.edges);
+    out << '}';
+  }
+  out << "]}" << page.substr(data_at + data_marker.size());
 }
 
 }  // namespace dlfl::tool

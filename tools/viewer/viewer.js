@@ -190,7 +190,8 @@
 
   // ---- drawing -----------------------------------------------------------------------------------------------
 
-  let current = 0, showEdges = true, pending = false;
+  // Edges follow the step shown (on below 200k faces, as in `dlfl render`) until the user chooses.
+  let current = 0, showEdges = true, edgesChosen = false, pending = false;
 
   function attribute(prog, name, b, size, type, normalized) {
     const at = gl.getAttribLocation(prog, name);
@@ -252,6 +253,7 @@
     current = Math.min(Math.max(0, index | 0), Math.max(0, steps.length - 1));
     const step = steps[current];
     if (!step) return;
+    if (!edgesChosen) edges.checked = showEdges = step.faces < 200000;
     $("step-label").textContent = step.label;
     $("step-counts").textContent = step.counts;
     const legend = $("legend");
@@ -270,11 +272,12 @@
   $("title").textContent = data.title;
   slider.max = String(Math.max(0, steps.length - 1));
   $("steps").style.display = steps.length > 1 ? "" : "none";
-  // Edges on by default below 200k faces, as in `dlfl render`.
-  showEdges = steps.length > 0 && steps[0].faces < 200000;
-  edges.checked = showEdges;
   slider.addEventListener("input", () => { showStep(Number(slider.value)); redraw(); });
-  edges.addEventListener("change", () => { showEdges = edges.checked; redraw(); });
+  edges.addEventListener("change", () => {
+    showEdges = edges.checked;
+    edgesChosen = true;
+    redraw();
+  });
   ortho.addEventListener("change", () => { camera.ortho = ortho.checked; redraw(); });
   for (const name of Object.keys(namedViews)) {
     const button = document.createElement("button");
@@ -299,7 +302,10 @@
     if (options.has("zoom")) camera.scale /= Number(options.get("zoom")) || 1;
     if (options.has("ortho")) camera.ortho = options.get("ortho") === "1";
     ortho.checked = camera.ortho;
-    if (options.has("edges")) edges.checked = showEdges = options.get("edges") === "1";
+    if (options.has("edges")) {
+      edges.checked = showEdges = options.get("edges") === "1";
+      edgesChosen = true;
+    }
     $("panel").classList.toggle("hidden", options.get("ui") === "0");
     if (options.has("step")) {
       // Through the slider itself, as a user's move would go.
