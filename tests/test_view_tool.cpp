@@ -6,6 +6,7 @@
 
 #ifdef DLFL_TOOL
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -91,7 +92,11 @@ TEST_CASE("view: the cube through two Catmull-Clark steps, a page that loads not
     CHECK(uint32s(step["edges"]).size() == 2u * edges[k]);
     const std::vector<unsigned char> colors = decoded(step["triangle_colors"]);
     CHECK(colors.size() == 3u * 2 * faces[k]);
-    CHECK(step["face_sizes"] == nlohmann::json::array({{4, faces[k], "#009e73"}}));
+    // One row for the quads, in the palette's quad colour as #rrggbb.
+    const dlfl::Rgba quad = dlfl::face_size_color(4);
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "#%02x%02x%02x", quad.r, quad.g, quad.b);
+    CHECK(step["face_sizes"] == nlohmann::json::array({{4, faces[k], std::string(hex)}}));
   }
   // The data's frame: the cube [-1, 1]^3 centred on the origin already.
   CHECK(steps[0]["bbox"] == nlohmann::json({{-1.0, -1.0, -1.0}, {1.0, 1.0, 1.0}}));
