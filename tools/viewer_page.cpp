@@ -7,8 +7,8 @@
 #include <string_view>
 
 #include <dlfl/errors.h>
-#include <dlfl/render/colors.h>
 #include <dlfl/navigation.h>
+#include <dlfl/render/colors.h>
 #include <dlfl/statistics.h>
 #include "viewer_template.h"  // generated from tools/viewer/ (viewer_template.cmake)
 
