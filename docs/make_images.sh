@@ -14,6 +14,13 @@ trap 'rm -rf "$scratch"' EXIT
 # A modelling session, one picture per logged operation: a cube, an extrusion, three handles, Catmull-Clark.
 "$dlfl" render data/genus3_handles.log.json --steps --size 260x260 -o "$out/genus3_handles.png"
 
+# The modelling examples (issue 12): the rind lantern (a shell with six windows, genus 5) and the wireframe
+# dodecahedron (its edges as rounded beams, genus 11), each replayed from its log.
+"$dlfl" replay data/rind_lantern.log.json -o "$scratch/rind_lantern.json"
+"$dlfl" render "$scratch/rind_lantern.json" --size 400x400 -o "$out/rind_lantern.png"
+"$dlfl" replay data/wireframe_dodecahedron.log.json -o "$scratch/wireframe_dodecahedron.json"
+"$dlfl" render "$scratch/wireframe_dodecahedron.json" --size 400x400 -o "$out/wireframe_dodecahedron.png"
+
 # Meng-Prautzsch MHP (honeycomb then corner pushing) on the dodecahedron, two applications.
 "$dlfl" render data/dodecahedron.obj -s mhp -n 2 --size 260x260 -o "$out/dodecahedron_mhp.png"
 
