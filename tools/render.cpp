@@ -183,7 +183,7 @@ Action add_render(CLI::App& app) {
                                  "--steps draws a contact sheet");
   auto a = std::make_shared<RenderArgs>();
   cmd->add_option("IN", a->in,
-                  "Mesh (.obj, .off, .ply, .json), cell complex (.vtk, .obj with p or l), or "
+                  "Mesh (.obj, .off, .ply, .stl, .json), cell complex (.vtk, .obj with p or l), or "
                   "operation log (.json) with --steps")
       ->required();
   cmd->add_option("-o,--output", a->out, "Picture: .png, or .svg (a vector drawing)")->required();
