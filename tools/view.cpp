@@ -85,7 +85,8 @@ Action add_view(CLI::App& app) {
     std::size_t max_faces = 2'000'000;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("IN", a->in, "Input mesh (.obj, .off, .ply, .stl, .json) or operation log (.json)")->required();
+  cmd->add_option("IN", a->in, "Input mesh (.obj, .off, .ply, .stl, .json) or operation log (.json)")
+      ->required();
   cmd->add_option("-o,--output", a->out, "Output page (.html)")->required();
   const auto [scheme, iterations] = add_scheme_options(cmd, *a, false);
   iterations->needs(scheme);
@@ -98,7 +99,8 @@ Action add_view(CLI::App& app) {
       throw UsageError("-o " + a->out + ": the page's name must end in .html or .htm");
     if (!a->params.empty() && !*scheme) throw UsageError("--param needs -s");
     if (is_cell_complex_file(a->in))
-      throw InvalidArgument(a->in + " is a cell complex; view draws DLFL meshes (.obj, .off, .ply, .stl, .json)");
+      throw InvalidArgument(a->in +
+                            " is a cell complex; view draws DLFL meshes (.obj, .off, .ply, .stl, .json)");
     ViewerPage page(a->max_faces);
     const std::string log = log_text_of(a->in);
     if (!log.empty()) {
