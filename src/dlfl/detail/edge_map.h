@@ -9,6 +9,7 @@
 #include <vector>
 
 #include <dlfl/detail/bucket_regions.h>
+#include <dlfl/detail/large_allocator.h>
 
 namespace dlfl::detail {
 
@@ -51,8 +52,10 @@ class EdgeMap {
     std::uint32_t target;
     std::uint32_t value;
   };
-  std::vector<std::size_t> start_;
-  std::vector<Slot> slots_;
+  // Large vectors: a million-face build's map is tens of megabytes, and blocks reused from the block cache come
+  // back mapped instead of being faulted in page by page.
+  LargeVector<std::size_t> start_;
+  LargeVector<Slot> slots_;
 };
 
 }  // namespace dlfl::detail
