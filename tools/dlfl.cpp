@@ -8,6 +8,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/io/atomic_file.h>
+#include <dlfl/thread_count.h>
 #include "commands.h"
 #include "feedback.h"
 #include "file_checks.h"
@@ -21,6 +22,11 @@ int main(int argc, char** argv) {
   app.fallthrough();
   app.add_flag("-v,--verbose", feedback().verbose, "Print a summary line per step and file (counts, time)");
   app.add_flag("-q,--quiet", feedback().quiet, "Print nothing but errors: no -v lines, no progress bar");
+  unsigned threads = 0;
+  app.add_option("--threads", threads,
+                 "Threads for the parallel passes (default: DLFL_THREADS, else every core); results do not "
+                 "depend on it")
+      ->check(CLI::Range(1u, 1024u));
   // A stopped run leaves no temporary file: outputs are written beside their targets, then renamed.
   dlfl::remove_temporary_files_on_signals();
   std::map<const CLI::App*, Action> actions;
@@ -54,6 +60,7 @@ int main(int argc, char** argv) {
     std::cerr << "error: " << e.what() << "\n";
     return usage;
   }
+  if (threads > 0) dlfl::set_thread_count(threads);
   try {
     for (const CLI::App* sub : app.get_subcommands()) return actions.at(sub)();
   } catch (const dlfl::UnknownNameError& e) {

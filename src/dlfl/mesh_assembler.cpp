@@ -1,7 +1,9 @@
 #include <dlfl/mesh_assembler.h>
 
+#include <dlfl/detail/parallel_for.h>
 #include <dlfl/errors.h>
 
+#include <atomic>
 #include <cstdint>
 #include <string>
 
@@ -45,7 +47,9 @@ MeshAssembler::MeshAssembler(std::size_t num_vertices, std::size_t num_faces, st
   }
   const std::size_t nc = num_faces * face_size;
   allocate(num_vertices, num_faces, nc);
-  for (std::uint32_t f = 0; f < num_faces; ++f) set_face(f, f * face_size, (f + 1) * face_size);
+  detail::parallel_for(num_faces, [&](std::size_t f) {
+    set_face(std::uint32_t(f), std::uint32_t(f * face_size), std::uint32_t((f + 1) * face_size));
+  });
 }
 
 void MeshAssembler::allocate(std::size_t num_vertices, std::size_t num_faces, std::size_t num_corners) {
@@ -60,22 +64,54 @@ void MeshAssembler::allocate(std::size_t num_vertices, std::size_t num_faces, st
 Mesh MeshAssembler::finish() {
   Mesh& m = mesh_;
   const std::size_t nc = m.corners_.size();
-  m.edges_.reserve(nc / 2);
-  for (std::uint32_t k = 0; k < nc; ++k) {
-    const std::uint32_t t = twin_[k];
-    if (t >= nc || twin_[t] != k || t == k) {
-      throw InvalidArgument("MeshAssembler: the twin of corner " + std::to_string(k) + " does not pair back");
+  // Edges are numbered in order of their smaller corner: each chunk of corners counts the edges it starts,
+  // the counts are summed in chunk order, and each chunk then numbers its own; the result is the serial
+  // numbering whatever the threads.
+  const std::size_t chunks = detail::chunk_count(nc);
+  std::vector<std::uint32_t> first_edge(chunks + 1, 0);
+  std::atomic<bool> unpaired = false;
+  detail::parallel_chunks(nc, detail::parallel_grain, [&](std::size_t begin, std::size_t end) {
+    std::uint32_t count = 0;
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t t = twin_[k];
+      if (t >= nc || twin_[t] != k || t == k) {
+        unpaired = true;
+        return;
+      }
+      count += t > k;
     }
-    if (t < k) continue;  // the edge was made at its smaller corner
-    const EdgeId e(static_cast<std::uint32_t>(m.edges_.size()));
-    m.edges_.push_back({{CornerId(k), CornerId(t)}});
-    m.corners_[k].edge = e;
-    m.corners_[t].edge = e;
+    first_edge[begin / detail::parallel_grain + 1] = count;
+  });
+  if (unpaired) {  // the first such corner, found serially so that the message does not depend on threads
+    for (std::uint32_t k = 0; k < nc; ++k) {
+      const std::uint32_t t = twin_[k];
+      if (t >= nc || twin_[t] != k || t == k) {
+        throw InvalidArgument("MeshAssembler: the twin of corner " + std::to_string(k) +
+                              " does not pair back");
+      }
+    }
   }
-  for (std::uint32_t k = 0; k < nc; ++k) {
-    auto& anchor = m.vertex_corner_[m.corners_[k].vertex.index()];
-    if (!anchor.valid()) anchor = CornerId(k);
-  }
+  for (std::size_t c = 0; c < chunks; ++c) first_edge[c + 1] += first_edge[c];
+  m.edges_.resize(first_edge[chunks]);
+  detail::parallel_chunks(nc, detail::parallel_grain, [&](std::size_t begin, std::size_t end) {
+    std::uint32_t e = first_edge[begin / detail::parallel_grain];
+    for (std::size_t k = begin; k < end; ++k) {
+      const std::uint32_t t = twin_[k];
+      if (t < k) continue;  // the edge is made at its smaller corner
+      m.edges_[e] = {{CornerId(std::uint32_t(k)), CornerId(t)}};
+      m.corners_[k].edge = EdgeId(e);
+      m.corners_[t].edge = EdgeId(e);
+      ++e;
+    }
+  });
+  // Each vertex's anchor is its smallest corner: a minimum, which no order of the threads changes.
+  detail::parallel_for(nc, [&](std::size_t k) {
+    std::atomic_ref<CornerId> anchor(m.vertex_corner_[m.corners_[k].vertex.index()]);
+    CornerId seen = anchor.load(std::memory_order_relaxed);
+    while ((!seen.valid() || seen.index() > k) &&
+           !anchor.compare_exchange_weak(seen, CornerId(std::uint32_t(k)), std::memory_order_relaxed)) {
+    }
+  });
   for (std::size_t v = 0; v < m.vertex_corner_.size(); ++v) {
     if (!m.vertex_corner_[v].valid()) {
       throw InvalidArgument("MeshAssembler: vertex " + std::to_string(v) + " has no corner");

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include <dlfl/dense_mesh.h>
+#include <dlfl/detail/parallel_for.h>
 #include <dlfl/errors.h>
 #include <dlfl/mesh_assembler.h>
 #include <dlfl/schemes/detail/boundary_curve.h>
@@ -84,25 +85,27 @@ Mesh catmull_clark(const Mesh& input, const BoundaryOptions& boundary, Origins* 
 
   // Face points.
   detail::LargeVector<glm::dvec3> face_point(nf);
-  for (std::uint32_t f = 0; f < nf; ++f) {
+  detail::parallel_for(nf, [&](std::size_t i) {
+    const auto f = static_cast<std::uint32_t>(i);
     if (is_hole(FaceId(f))) {
       face_point[f] = glm::dvec3(0.0);  // summed into boundary vertices, whose sums are not used
-      continue;
+      return;
     }
     glm::dvec3 sum(0.0);
     for (CornerId c : m.corners(FaceId(f))) sum += m.position(m.vertex(c));
     face_point[f] = sum / double(m.size(FaceId(f)));
     out.set_position(face_base + (holes_kept ? layout->rank(FaceId(f)) : f), face_point[f]);
-  }
+  });
   // Edge points; under the curve rule, a boundary edge's is its midpoint (cubic B-spline rule).
-  for (std::uint32_t e = 0; e < ne; ++e) {
-    const EdgeId id(e);
+  detail::parallel_for(ne, [&](std::size_t i) {
+    const EdgeId id(static_cast<std::uint32_t>(i));
+    const std::uint32_t e = id.index();
     const FaceId f0 = m.face(id, 0), f1 = m.face(id, 1);
     const glm::dvec3 ends = m.position(m.from(id)) + m.position(m.to(id));
     out.set_position(edge_base + e, is_hole(f0) || is_hole(f1)
                                         ? ends / 2.0
                                         : (ends + face_point[f0.index()] + face_point[f1.index()]) / 4.0);
-  }
+  });
   // Vertex points: (Q + 2R + (n-3) S) / n = (sum of face points + 2 sum of midpoints) / n^2 + (n-3) S / n.
   // Each corner at v contributes its face's point and the midpoint of its outgoing edge (each edge at v
   // leaves v at exactly one corner). Under the curve rule, boundary vertices have their own rule.
@@ -115,10 +118,11 @@ Mesh catmull_clark(const Mesh& input, const BoundaryOptions& boundary, Origins* 
     sums[v] += face_point[m.face(c).index()] + 2.0 * mid;
     ++valence[v];
   }
-  for (std::uint32_t v = 0; v < nv; ++v) {
+  detail::parallel_for(nv, [&](std::size_t v) {
     const double n = valence[v];
-    out.set_position(v, sums[v] / (n * n) + (n - 3.0) / n * m.position(VertexId(v)));
-  }
+    out.set_position(std::uint32_t(v),
+                     sums[v] / (n * n) + (n - 3.0) / n * m.position(VertexId(std::uint32_t(v))));
+  });
   if (open) open->set_binary_vertex_points(m, out);
 
   // Quad k for corner k: (vertex point, edge point out, face point, edge point in).

@@ -1,6 +1,7 @@
 #include <dlfl/schemes/detail/quad_split.h>
 
 #include <dlfl/dense_mesh.h>
+#include <dlfl/detail/parallel_for.h>
 
 namespace dlfl::detail {
 
@@ -10,7 +11,8 @@ namespace dlfl::detail {
 void assemble_quad_split(const Mesh& m, MeshAssembler& out) {
   const auto [nv, ne, nf, nc] = dense_counts(m);
   const std::uint32_t edge_base = nv, face_base = nv + ne;
-  for (std::uint32_t k = 0; k < nc; ++k) {
+  parallel_for(nc, [&](std::size_t i) {
+    const auto k = static_cast<std::uint32_t>(i);
     const CornerId c(k);
     const CornerId p = m.prev(c);
     const std::uint32_t q = 4 * k;
@@ -18,7 +20,7 @@ void assemble_quad_split(const Mesh& m, MeshAssembler& out) {
     out.set_corner(q + 1, edge_base + m.edge(c).index(), 4 * m.next(c).index() + 2);
     out.set_corner(q + 2, face_base + m.face(c).index(), 4 * p.index() + 1);
     out.set_corner(q + 3, edge_base + m.edge(p).index(), 4 * m.opposite(p).index() + 0);
-  }
+  });
   for (std::uint32_t k = 0; k < nc; ++k) {
     if (m.is_hole(m.face(CornerId(k)))) out.set_hole(k, true);
   }
