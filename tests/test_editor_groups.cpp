@@ -222,3 +222,44 @@ TEST_CASE("oplog: every parameter error names the op index and the field, before
   CHECK(error({{{"op", "undo"}}}) == P{0, "op"});
   CHECK(error({{{"op", "end_group"}}}) == P{0, "op"});
 }
+
+TEST_CASE("editor without history: the same meshes and log, nothing to undo, groups counted") {
+  Editor::Options no_history;
+  no_history.keep_history = false;
+  Editor kept, dropped(no_history);
+  for (Editor* ed : {&kept, &dropped}) {
+    ed->set_mesh(build_mesh(test::cube_soup()));
+    ed->subdivide("catmull-clark");
+    ed->begin_group("edits");
+    three_edits(*ed);
+    ed->end_group();
+  }
+  CHECK(dropped.mesh() == kept.mesh());
+  CHECK(log_text(dropped) == log_text(kept));
+  CHECK(kept.undo_history().size() == 3);  // the load, the subdivision, the group
+  CHECK(dropped.undo_history().empty());
+  CHECK_FALSE(dropped.undo());
+  CHECK_THROWS_AS(dropped.apply("undo"), InvalidArgument);
+  CHECK(dropped.mesh() == kept.mesh());  // the refused undo changed nothing
+}
+
+TEST_CASE("replay without history: the same mesh; a log that undoes keeps its history anyway") {
+  Editor ed;
+  ed.set_mesh(build_mesh(test::cube_soup()));
+  ed.subdivide("catmull-clark");
+  ed.subdivide("doo-sabin");
+  ed.undo();  // back to the Catmull-Clark mesh: the replay needs the history for this op
+  const std::string undoing = log_text(ed);
+  ReplayOptions options;
+  options.keep_history = false;
+  const Editor replayed = replay_log(undoing, "undoing", options);
+  CHECK(replayed.mesh() == ed.mesh());
+  CHECK(replayed.undo_history().size() == 2);  // kept: the load and the subdivision left after the undo
+
+  Editor plain;
+  plain.set_mesh(build_mesh(test::cube_soup()));
+  plain.subdivide("catmull-clark", {}, 2);
+  const Editor lean = replay_log(log_text(plain), "plain", options);
+  CHECK(lean.mesh() == plain.mesh());
+  CHECK(lean.undo_history().empty());
+}

@@ -1,6 +1,7 @@
 // dlfl edit IN -o OUT --op 'NAME key=value ...' [--op ...] [--log LOG.json [--self-contained]]
 // Applies registered operations in order; nothing is written unless every one of them succeeds.
 
+#include <algorithm>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -34,7 +35,10 @@ Action add_edit(CLI::App& app) {
     // Every op string is parsed before the input is read: a typo costs nothing.
     std::vector<std::pair<std::string, Params>> ops;
     for (const auto& text : a->ops) ops.push_back(parse_operation_text(text));
-    Editor editor = open_editor(a->files);
+    // The history is kept only when an op undoes or redoes: otherwise each replaced mesh is freed at once.
+    const bool undoes = std::any_of(ops.begin(), ops.end(),
+                                    [](const auto& op) { return op.first == "undo" || op.first == "redo"; });
+    Editor editor = open_editor(a->files, undoes);
     for (std::size_t i = 0; i < ops.size(); ++i) {
       try {
         const auto start = std::chrono::steady_clock::now();

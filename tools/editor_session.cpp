@@ -22,9 +22,10 @@ void check_editor_files(const EditorFiles& files) {
   check_files({{"IN", files.in}}, {{"-o", files.out}, {"--log", files.log}});
 }
 
-Editor open_editor(const EditorFiles& files) {
+Editor open_editor(const EditorFiles& files, bool keep_history) {
   Editor::Options options;
   options.embed_meshes = files.self_contained;
+  options.keep_history = keep_history;
   Editor editor(options);
   FileReport report("read", files.in);
   editor.set_mesh(read_mesh(files.in), files.in);

@@ -25,8 +25,9 @@ void add_output_options(CLI::App* cmd, EditorFiles& files, const std::string& ou
 void check_editor_files(const EditorFiles& files);
 
 /// An editor holding the mesh of `files.in` as its first entry; its log embeds the meshes when
-/// `files.self_contained`.
-Editor open_editor(const EditorFiles& files);
+/// `files.self_contained`. With `keep_history` false it keeps nothing for undo (a command that never undoes
+/// frees each replaced mesh at once).
+Editor open_editor(const EditorFiles& files, bool keep_history);
 
 /// Writes the editor's mesh to `files.out` (binary PLY unless `files.ascii`) and, unless `files.log` is
 /// empty, its operation log there: both or neither (a FileBatch), no temporary file left on failure.

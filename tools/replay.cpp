@@ -26,6 +26,7 @@ Action add_replay(CLI::App& app) {
     check_files({{"LOG", *log}}, {{"-o", *out}});
     ReplayOptions options;
     options.verify = !*no_verify;
+    options.keep_history = false;  // only the final mesh is written (kept anyway if the log undoes)
     FileReport replaying("replay", *log);
     const Editor editor = [&] {
       StepReport steps(0, 0);

@@ -116,7 +116,7 @@ Action add_subdivide(CLI::App& app) {
     check_editor_files(a->files);
     if (is_cell_complex_file(a->files.in)) return subdivide_cells(*a);
     const Params params = a->parsed_params();
-    Editor editor = open_editor(a->files);
+    Editor editor = open_editor(a->files, false);  // no undo: M_n is freed once M_n+1 is built
     const double predicted_faces = plan_run(editor.mesh(), a->scheme, params, a->iterations);
     {
       StepReport report(a->iterations, predicted_faces);

@@ -22,6 +22,10 @@ void Editor::push(Entry entry) {
 
 void Editor::record(std::string label, Part part) {
   redo_.clear();
+  if (!options_.keep_history) {  // the part (a replaced mesh, a change record) is dropped here
+    if (!groups_.empty()) ++groups_.front().entry.operations;
+    return;
+  }
   if (!groups_.empty()) {
     Entry& group = groups_.front().entry;  // inner groups merge into the outermost one
     ++group.operations;

@@ -36,6 +36,10 @@ class Editor {
     bool embed_meshes = false;
     /// Most undo entries kept; the oldest are dropped first. 0 keeps everything.
     std::size_t undo_limit = 0;
+    /// false: nothing is kept for undo, so a replaced mesh (M_n after a subdivision) is freed as soon as its
+    /// successor is built, and `undo` has nothing to do. For callers that never undo: the `dlfl` tool's
+    /// subdivide, and its edit and replay when they hold no undo or redo op.
+    bool keep_history = true;
   };
 
   /// One entry of the history, as `undo_history` and `redo_history` report it.

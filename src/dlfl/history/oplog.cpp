@@ -1,5 +1,7 @@
 #include <dlfl/history/oplog.h>
 
+#include <algorithm>
+
 #include <nlohmann/json.hpp>
 
 #include <dlfl/io/atomic_file.h>
@@ -253,6 +255,11 @@ Editor replay_log(std::string_view text, const std::string& name, const ReplayOp
   if (final_hash != log.end() && !final_hash->is_string()) {
     throw LogError(name, LogError::npos, "final_hash", "expected a string");
   }
+  options.keep_history =
+      replay.keep_history || std::any_of(ops->begin(), ops->end(), [](const auto& op) {
+        const auto kind = op.is_object() ? op.find("op") : op.end();
+        return kind != op.end() && kind->is_string() && (*kind == "undo" || *kind == "redo");
+      });
   Editor editor(options);
   for (std::size_t i = 0; i < ops->size(); ++i) {
     replay_op(editor, (*ops)[i], i, name, replay, version->get<int>());

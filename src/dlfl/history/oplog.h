@@ -52,6 +52,10 @@ struct ReplayOptions {
   /// the editor recorded it. For callers that want every intermediate mesh (the viewer's steps); what it
   /// throws ends the replay.
   std::function<void(const Editor& editor, std::size_t op)> after_op;
+  /// false: the replaying editor keeps no undo history (Editor::Options::keep_history), unless the log
+  /// itself undoes or redoes, which needs it. Saves the memory of every replaced mesh when the caller only
+  /// wants the final mesh.
+  bool keep_history = true;
 };
 
 /// Replays log text in a fresh editor (with the log's undo limit) and returns it; `name` is used in
