@@ -1,12 +1,16 @@
 // The renderer (dlfl/render/, `dlfl render`): pixels predicted from the camera formula by hand, colours from
 // the fixed face-size palette, the orientation test against reverse_orientation, holes, PNG files read back
-// through libpng's own reader, SVG structure, and the tool's refusals.
+// through libpng's own reader, SVG structure, the settings that the tool and the Python binding share, and
+// the tool's refusals.
 
 #include <doctest/doctest.h>
 #include <png.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <limits>
+#include <span>
 #include <sstream>
 #include <string>
 
@@ -14,6 +18,7 @@
 #include <dlfl/operations/reverse_orientation.h>
 #include <dlfl/render/contact_sheet.h>
 #include <dlfl/render/font.h>
+#include <dlfl/render/picture_settings.h>
 #include <dlfl/render/png.h>
 #include <dlfl/render/rasterizer.h>
 #include <dlfl/render/svg.h>
@@ -335,6 +340,106 @@ TEST_CASE("render: a contact sheet puts its pictures side by side above their ca
   for (int y = 30; y < cut.height(); ++y) {
     for (int x = 40; x < 120; ++x) REQUIRE(cut.at(x, y) == Rgba{255, 255, 255, 255});
   }
+}
+
+TEST_CASE("picture settings: every bad one refused naming it; good ones read as documented") {
+  const auto refused = [](PictureSettings s, const std::string& parameter) {
+    CAPTURE(parameter);
+    try {
+      picture_setup(s);
+      FAIL("accepted");
+    } catch (const ParameterError& e) {
+      CHECK(e.parameter() == parameter);
+    }
+  };
+  PictureSettings s;
+  s.width = 0;
+  refused(s, "size");
+  s.width = 16385;
+  refused(s, "size");
+  s.width = -5;
+  refused(s, "size");
+  s.width = s.height = 8193;  // each side allowed, 2^26 + 2 * 8192 + 1 pixels are not
+  refused(s, "size");
+  s = {};
+  s.view = "sideways";
+  refused(s, "view");
+  s = {};
+  s.azimuth = std::numeric_limits<double>::infinity();
+  refused(s, "azimuth");
+  s = {};
+  s.elevation = std::numeric_limits<double>::quiet_NaN();
+  refused(s, "elevation");
+  s = {};
+  s.zoom = 0;
+  refused(s, "zoom");
+  s.zoom = 1000.5;
+  refused(s, "zoom");
+  s = {};
+  s.color_by = "rainbow";
+  refused(s, "color_by");
+  s = {};
+  s.background = "#12345";
+  refused(s, "background");
+
+  // The largest picture is allowed; the defaults are `dlfl render`'s: 800 x 600, iso, edges left to the
+  // scene's size, a white opaque background.
+  s = {};
+  s.width = 8192;
+  s.height = 8192;
+  CHECK_NOTHROW(picture_setup(s));
+  const PictureSetup defaults = picture_setup({});
+  CHECK(defaults.camera.width == 800);
+  CHECK(defaults.camera.height == 600);
+  const double third = 1 / std::sqrt(3.0);  // iso looks from (1, 1, 1)
+  CHECK(defaults.camera.toward.x == doctest::Approx(third));
+  CHECK(defaults.camera.toward.y == doctest::Approx(third));
+  CHECK(defaults.camera.toward.z == doctest::Approx(third));
+  CHECK_FALSE(defaults.options.edges.has_value());
+  CHECK(defaults.options.background == Rgba{255, 255, 255, 255});
+  CHECK(defaults.color_by.mode == ColorBy::Mode::face_size);
+
+  // Angles replace the view's; transparent keeps the colour and drops the alpha.
+  s = {};
+  s.view = "front";
+  s.azimuth = 90;  // the right view
+  s.background = "#102030";
+  s.transparent = true;
+  s.zoom = 2;
+  const PictureSetup set = picture_setup(s);
+  CHECK(set.camera.toward.x == doctest::Approx(1));
+  CHECK(set.camera.toward.z == doctest::Approx(0).epsilon(1e-12));
+  CHECK(set.options.background == Rgba{0x10, 0x20, 0x30, 0});
+  // Fitted to the unit cube from the right (extent 1 along right and up): zoom * 0.9 * min(800, 600).
+  const RenderScene cube = mesh_scene(build_mesh(unit_cube_soup()));
+  CHECK(fitted_camera(set, std::span(&cube, 1)).scale == doctest::Approx(2 * 0.9 * 600));
+}
+
+TEST_CASE("picture files: the format by extension in either case; another one refused before any file") {
+  CHECK(picture_format("a/b.png") == PictureFormat::png);
+  CHECK(picture_format("B.SVG") == PictureFormat::svg);
+  CHECK(picture_format("c.Png") == PictureFormat::png);
+  CHECK_FALSE(picture_format("d.jpg").has_value());
+  CHECK_FALSE(picture_format("png").has_value());
+  const RenderScene cube = mesh_scene(build_mesh(unit_cube_soup()));
+  PictureSettings small;
+  small.width = 40;
+  small.height = 30;
+  const PictureSetup setup = picture_setup(small);
+  const Camera camera = fitted_camera(setup, std::span(&cube, 1));
+  const auto bad = test::scratch("picture.jpg");
+  std::filesystem::remove(bad);
+  CHECK_THROWS_AS(write_picture(cube, camera, setup.options, bad), InvalidArgument);
+  CHECK_FALSE(std::filesystem::exists(bad));
+  // PNG and SVG are what write_png and write_svg write.
+  const auto png = test::scratch("picture.PNG"), svg = test::scratch("picture.svg");
+  write_picture(cube, camera, setup.options, png);
+  write_picture(cube, camera, setup.options, svg);
+  std::ostringstream expected_png, expected_svg;
+  write_png(render(cube, camera, setup.options), expected_png);
+  write_svg(cube, camera, setup.options, expected_svg);
+  CHECK(test::read_text(png) == expected_png.str());
+  CHECK(test::read_text(svg) == expected_svg.str());
 }
 
 #ifdef DLFL_TOOL

@@ -2,10 +2,11 @@
 // of M_0 ... M_N, and with LOG.json --steps one of the mesh after each logged operation.
 
 #include <algorithm>
-#include <cctype>
 #include <charconv>
 #include <cstdint>
 #include <string>
+#include <system_error>
+#include <tuple>
 #include <vector>
 
 #include <dlfl/cells/cell_io.h>
@@ -15,9 +16,9 @@
 #include <dlfl/io/mesh_io.h>
 #include <dlfl/parameters.h>
 #include <dlfl/render/contact_sheet.h>
+#include <dlfl/render/picture_settings.h>
 #include <dlfl/render/png.h>
 #include <dlfl/render/rasterizer.h>
-#include <dlfl/render/svg.h>
 #include <dlfl/schemes/scheme_registry.h>
 #include "commands.h"
 #include "feedback.h"
@@ -36,25 +37,18 @@ struct RenderArgs {
   CLI::Option *azimuth_option, *elevation_option, *edges_option;
 };
 
-// "WxH", each from 1 to 16384, at most 2^26 pixels (the rasterizer's buffers take 32 bytes a pixel).
-std::pair<int, int> parse_size(const std::string& text) {
+// "WxH"; the sizes themselves are checked by picture_setup.
+std::pair<std::int64_t, std::int64_t> parse_size(const std::string& text) {
+  const auto whole = [](const char* first, const char* last, std::int64_t& value) {
+    const auto [end, error] = std::from_chars(first, last, value);
+    return first < last && end == last && error == std::errc();
+  };
   const std::size_t x = text.find('x');
-  int w = 0, h = 0;
-  const char* end = text.data() + text.size();
-  const bool good = x != std::string::npos &&
-                    std::from_chars(text.data(), text.data() + x, w).ptr == text.data() + x &&
-                    std::from_chars(text.data() + x + 1, end, h).ptr == end && x > 0 && x + 1 < text.size();
-  if (!good || w < 1 || h < 1 || w > 16384 || h > 16384 || std::int64_t(w) * h > (std::int64_t(1) << 26)) {
-    throw UsageError("--size: expected WxH with W and H from 1 to 16384 and at most 2^26 pixels, got '" +
-                     text + "'");
-  }
+  std::int64_t w = 0, h = 0;
+  const char* start = text.data();
+  if (x == std::string::npos || !whole(start, start + x, w) || !whole(start + x + 1, start + text.size(), h))
+    throw UsageError("--size: expected WxH (two whole numbers of pixels), got '" + text + "'");
   return {w, h};
-}
-
-std::string lower_extension(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
 }
 
 std::string mesh_counts(const Mesh& mesh) {
@@ -132,41 +126,37 @@ Frames mesh_frames(const RenderArgs& a, const ColorBy& color_by) {
 
 Exit run_render(const RenderArgs& a) {
   check_files({{"IN", a.in}}, {{"-o", a.out}});
-  const std::string ext = lower_extension(a.out);
-  if (ext != ".png" && ext != ".svg")
-    throw UsageError("-o: the picture is written as .png or .svg, not '" + a.out + "'");
+  const std::optional<PictureFormat> format = picture_format(a.out);
+  if (!format) throw UsageError("-o: the picture is written as .png or .svg, not '" + a.out + "'");
   const bool sheet = !a.scheme.empty() || a.steps;
-  if (sheet && ext == ".svg") throw UsageError("-o: a contact sheet (-s or --steps) is written as .png");
+  if (sheet && format == PictureFormat::svg)
+    throw UsageError("-o: a contact sheet (-s or --steps) is written as .png");
   if (a.steps && !a.scheme.empty()) throw UsageError("--steps draws a log's operations; it takes no -s");
-  const auto [width, height] = parse_size(a.size);
-  ViewAngles angles = view_angles(parse_view(a.view));
-  if (a.azimuth_option->count() > 0) angles.azimuth = a.azimuth;
-  if (a.elevation_option->count() > 0) angles.elevation = a.elevation;
-  Camera camera(angles, width, height);
-  const ColorBy color_by = parse_color_by(a.color_by);
-  RenderOptions options;
-  options.background = parse_color(a.background, "background");
-  if (a.transparent) options.background.a = 0;
-  options.smooth = a.smooth;
-  if (a.edges_option->count() > 0) options.edges = a.edges;
-  if (!(a.zoom > 0 && a.zoom <= 1000)) throw UsageError("--zoom: must be above 0 and at most 1000");
+  PictureSettings settings;
+  std::tie(settings.width, settings.height) = parse_size(a.size);
+  settings.view = a.view;
+  if (a.azimuth_option->count() > 0) settings.azimuth = a.azimuth;
+  if (a.elevation_option->count() > 0) settings.elevation = a.elevation;
+  settings.zoom = a.zoom;
+  if (a.edges_option->count() > 0) settings.edges = a.edges;
+  settings.smooth = a.smooth;
+  settings.color_by = a.color_by;
+  settings.background = a.background;
+  settings.transparent = a.transparent;
+  const PictureSetup setup = picture_setup(settings);
+  const ColorBy& color_by = setup.color_by;
+  const RenderOptions& options = setup.options;
 
   const Frames frames = a.steps                      ? log_steps(a, color_by)
                         : is_cell_complex_file(a.in) ? cell_frames(a, color_by)
                                                      : mesh_frames(a, color_by);
-  // One camera for all the pictures of a sheet, fitted to all of them: sizes compare across the sheet.
-  for (const RenderScene& scene : frames.scenes) camera.include(scene.positions);
-  camera.fit(a.zoom);
-  if (ext == ".svg") {
-    write_svg(frames.scenes[0], camera, options, a.out);
+  if (!sheet) {
+    write_picture(frames.scenes[0], fitted_camera(setup, frames.scenes), options, a.out);
     return ok;
   }
+  const Camera camera = fitted_camera(setup, frames.scenes);
   std::vector<Image> pictures;
   for (const RenderScene& scene : frames.scenes) pictures.push_back(render(scene, camera, options));
-  if (!sheet) {
-    write_png(pictures[0], a.out);
-    return ok;
-  }
   Rgba text =
       options.background.a == 0 || options.background.r + options.background.g + options.background.b > 384
           ? Rgba{30, 30, 30, 255}

@@ -3,7 +3,7 @@
 
 A cube grows two legs and a handle (extrusions and a tube between two faces), is rounded by Catmull-Clark
 subdivision, and is written out with its operation log, which `build/bin/dlfl replay` replays to the same
-mesh. With matplotlib installed the result is also drawn to a PNG.
+mesh, and drawn with dlfl.render, the library's renderer, to a PNG (nothing else to install).
 """
 
 # %% Set-up: the output folder (the first argument, else ./python_example_output).
@@ -18,6 +18,7 @@ out = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "python_example_output"
 out.mkdir(parents=True, exist_ok=True)
 
 # %% A cube from NumPy arrays: vertex i is handle i, face i is handle i (counter-clockwise from outside).
+# Up is +y and the front +z, as the renderer takes models.
 positions = np.array([[x, y, z] for z in (-1, 1) for y in (-1, 1) for x in (-1, 1)], dtype=float)
 faces = np.array([[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]])
 ed = dlfl.Editor(dlfl.Mesh.from_arrays(positions, faces))
@@ -31,7 +32,7 @@ def face_towards(direction):
 
 
 # %% Two legs: the bottom face split in two by an edge, each half extruded downwards in two segments.
-bottom = face_towards([0, 0, -1])
+bottom = face_towards([0, -1, 0])
 corners = mesh.face_corners(bottom)
 with ed.group("legs"):
     # A cut from the midpoint of one edge to the midpoint of the opposite edge.
@@ -44,7 +45,7 @@ print("legs:", mesh)
 
 # %% A handle, as on a mug: the top and front faces inset, then joined by a tube of six segments that leaves
 # and enters along their normals.
-top, front = face_towards([0, 0, 1]), face_towards([0, -1, 0])
+top, front = face_towards([0, 1, 0]), face_towards([0, 0, 1])
 ed.inset_face(faces=[top, front], amount=0.4)
 ed.connect_faces(face1=top, face2=front, segments=6, curve="hermite", weight1=1.5, weight2=1.5)
 info = dlfl.info(mesh)
@@ -64,25 +65,11 @@ ed.write_log(out / "creature.log.json")
 assert dlfl.replay(out / "creature.log.json").mesh == final
 print("wrote", out / "creature.obj", "and", out / "creature.log.json")
 
-# %% A picture, when matplotlib is installed: the polygons shaded by their normal's z.
-try:
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
-    from mpl_toolkits.mplot3d.art3d import Poly3DCollection
-except ImportError:
-    print("matplotlib is not installed: no picture")
-else:
-    points, (offsets, indices) = final.to_arrays()
-    polygons = [points[indices[offsets[i] : offsets[i + 1]]] for i in range(len(offsets) - 1)]
-    shade = [0.5 + 0.5 * final.face_normal(f)[2] for f in final.surface_faces()]
-    figure = plt.figure(figsize=(6, 6))
-    axes = figure.add_subplot(projection="3d")
-    axes.add_collection3d(Poly3DCollection(polygons, facecolors=plt.cm.viridis(shade), edgecolor="k", linewidth=0.1))
-    low, high = points.min(axis=0), points.max(axis=0)
-    axes.set_xlim(low[0], high[0]), axes.set_ylim(low[1], high[1]), axes.set_zlim(low[2], high[2])
-    axes.set_box_aspect(high - low)
-    axes.view_init(elev=15, azim=-30)
-    figure.savefig(out / "creature.png", dpi=120)
-    print("drew", out / "creature.png")
+# %% Pictures with the library's renderer (what `dlfl render` draws): a PNG file, and a picture as a NumPy
+# array of RGBA bytes, (height, width, 4), for a notebook to show (e.g. matplotlib's imshow) or a script to
+# inspect; here the share of the picture that the creature covers from the front.
+dlfl.render(final, out / "creature.png", size=(800, 600), view="iso", smooth=True)
+picture = dlfl.render(final, size=(400, 300), view="front", transparent=True)
+covered = np.count_nonzero(picture[..., 3]) / (picture.shape[0] * picture.shape[1])
+print("drew", out / "creature.png", f"; from the front the creature covers {covered:.0%} of the picture")
+assert 0 < covered < 1

@@ -10,6 +10,7 @@
         ...
     ed.undo()
     ed.write_log("session.json")         # `dlfl replay session.json -o out.obj` gives the same mesh
+    dlfl.render(fine, "fine.png", view="front")  # or, without a path, an (h, w, 4) uint8 RGBA array
 
 Handles (vertices, edges, faces, corners) are ints. Errors are dlfl.Error and its subclasses, which mirror
 the C++ library's. The compiled part is dlfl._dlfl; this package adds the Editor's operation methods
@@ -34,6 +35,7 @@ from ._dlfl import (
     operations,
     read_cell_complex,
     read_mesh,
+    render,
     replay,
     schemes,
     subdivide,
@@ -164,6 +166,7 @@ __all__ = [
     "operations",
     "read_cell_complex",
     "read_mesh",
+    "render",
     "replay",
     "schemes",
     "subdivide",

@@ -153,8 +153,10 @@ void bind_mesh(py::module_& m);
 void bind_io(py::module_& m);
 /// subdivide, schemes, operations and mlca_subdivide (schemes.cpp);
 void bind_schemes(py::module_& m);
-/// dlfl.Editor and replay (editor.cpp).
+/// dlfl.Editor and replay (editor.cpp);
 void bind_editor(py::module_& m);
+/// render, pictures of meshes and cell complexes (render.cpp).
+void bind_render(py::module_& m);
 
 /// The parameters of the registered operation "subdivide" for `iterations` steps of `scheme` with the
 /// scheme's parameters given as keywords (converted by the scheme's declarations): what dlfl.subdivide and

@@ -10,4 +10,5 @@ PYBIND11_MODULE(_dlfl, m) {
   dlfl::python::bind_io(m);
   dlfl::python::bind_schemes(m);
   dlfl::python::bind_editor(m);
+  dlfl::python::bind_render(m);
 }
