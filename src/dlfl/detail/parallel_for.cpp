@@ -3,11 +3,14 @@
 #include <atomic>
 #include <charconv>
 #include <cstdlib>
+#include <exception>
+#include <functional>
 #include <memory>
 #include <mutex>
 #include <string>
 #include <string_view>
 #include <thread>
+#include <vector>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -71,6 +74,45 @@ void set_thread_count(unsigned count) {
 
 namespace detail {
 
+namespace {
+
+#if defined(__SANITIZE_THREAD__)
+#define DLFL_THREAD_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(thread_sanitizer)
+#define DLFL_THREAD_SANITIZER 1
+#endif
+#endif
+
+#if defined(DLFL_THREAD_SANITIZER)
+// Under ThreadSanitizer the chunks run on plain std::threads: libtbb is not instrumented, so its hand-offs
+// would be invisible and every chunk would look racy. What TSan checks is the chunk bodies, the library's own
+// code, and those are the same here. Slower (threads made per pass), which only the sanitizer build pays.
+void run_chunks(unsigned count, std::size_t chunks, const std::function<void(std::size_t)>& run) {
+  std::atomic<std::size_t> next = 0;
+  std::exception_ptr error;
+  std::mutex error_mutex;
+  auto worker = [&] {
+    for (std::size_t c; (c = next++) < chunks;) {
+      try {
+        run(c);
+      } catch (...) {
+        std::lock_guard lock(error_mutex);
+        if (!error) error = std::current_exception();
+        next = chunks;  // stop handing out chunks
+      }
+    }
+  };
+  std::vector<std::thread> helpers;
+  for (unsigned t = 1; t < count && t < chunks; ++t) helpers.emplace_back(worker);
+  worker();
+  for (std::thread& h : helpers) h.join();
+  if (error) std::rethrow_exception(error);
+}
+#endif
+
+}  // namespace
+
 void parallel_chunks(std::size_t n, std::size_t grain, ChunkBody body) {
   if (grain == 0) grain = 1;
   const std::size_t chunks = chunk_count(n, grain);
@@ -85,12 +127,17 @@ void parallel_chunks(std::size_t n, std::size_t grain, ChunkBody body) {
     for (std::size_t c = 0; c < chunks; ++c) run(c);
     return;
   }
+#if defined(DLFL_THREAD_SANITIZER)
+  (void)arena;
+  run_chunks(count, chunks, run);
+#else
   arena->execute([&] {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, chunks, 1),
                       [&](const tbb::blocked_range<std::size_t>& r) {
                         for (std::size_t c = r.begin(); c != r.end(); ++c) run(c);
                       });
   });
+#endif
 }
 
 }  // namespace detail
