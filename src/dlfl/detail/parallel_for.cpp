@@ -45,7 +45,10 @@ struct Threads {
   std::pair<unsigned, std::shared_ptr<tbb::task_arena>> current() {
     std::lock_guard lock(mutex);
     if (count == 0) count = default_thread_count();
-    if (count > 1 && !arena) arena = std::make_shared<tbb::task_arena>(int(count));
+    // TBB has at most a worker per core beyond the caller and warns on a larger arena; more threads than
+    // cores would not run at once anyway, and the results do not depend on the count.
+    const unsigned cores = std::max(1u, std::thread::hardware_concurrency());
+    if (count > 1 && !arena) arena = std::make_shared<tbb::task_arena>(int(std::min(count, cores)));
     return {count, arena};
   }
   void set(unsigned n) {
