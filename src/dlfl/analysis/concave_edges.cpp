@@ -16,18 +16,6 @@
 namespace dlfl {
 namespace {
 
-double bounding_diagonal(const Mesh& mesh) {
-  bool first = true;
-  glm::dvec3 lo(0.0), hi(0.0);
-  for (VertexId v : mesh.vertices()) {
-    const glm::dvec3& p = mesh.position(v);
-    lo = first ? p : glm::min(lo, p);
-    hi = first ? p : glm::max(hi, p);
-    first = false;
-  }
-  return glm::length(hi - lo);
-}
-
 // The angle between two unit vectors, accurate near 0 (where the bends of a fine mesh are).
 double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
   return std::atan2(glm::length(glm::cross(a, b)), glm::dot(a, b));
@@ -40,7 +28,7 @@ ConcaveEdges concave_edges(const Mesh& mesh, double relative_tolerance) {
     throw InvalidArgument("concave_edges: relative_tolerance = " + format_number(relative_tolerance) +
                           " must be finite and >= 0");
   }
-  const double tolerance = relative_tolerance * bounding_diagonal(mesh);
+  const double tolerance = relative_tolerance * bounding_box_diagonal(mesh);
   // Each face's plane and centroid, once.
   std::vector<FacePlane> planes(mesh.face_capacity());
   std::vector<glm::dvec3> centroids(mesh.face_capacity());

@@ -1,0 +1,54 @@
+#include <dlfl/schemes/detail/honeycomb_planarize.h>
+
+#include <cmath>
+#include <glm/geometric.hpp>
+#include <vector>
+
+#include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/geometry.h>
+#include <dlfl/operations/detail/planarize_moves.h>
+
+namespace dlfl::detail {
+namespace {
+
+constexpr double flat_tolerance = 1e-9;
+
+bool on_boundary(const Mesh& mesh, VertexId v) {
+  for (CornerId c : mesh.corners(v)) {
+    if (mesh.is_hole(mesh.face(c))) return true;
+  }
+  return false;
+}
+
+}  // namespace
+
+bool has_flat_region(const Mesh& mesh) {
+  const double tolerance = flat_tolerance * bounding_box_diagonal(mesh);
+  for (EdgeId e : mesh.edges()) {
+    const FaceId f = mesh.face(mesh.corner(e, 0)), g = mesh.face(mesh.corner(e, 1));
+    if (f == g || mesh.is_hole(f) || mesh.is_hole(g)) continue;
+    const FacePlane pf = face_plane(mesh, f), pg = face_plane(mesh, g);
+    if (pf.normal == glm::dvec3(0.0) || pg.normal == glm::dvec3(0.0)) continue;
+    if (glm::length(pf.normal - pg.normal) > flat_tolerance) continue;
+    if (std::abs(pf.distance(face_centroid(mesh, g))) <= tolerance &&
+        std::abs(pg.distance(face_centroid(mesh, f))) <= tolerance)
+      return true;
+  }
+  return false;
+}
+
+void planarize_new_faces(Mesh& result) {
+  std::vector<bool> fixed(result.vertex_capacity(), false);
+  for (VertexId v : result.vertices()) fixed[v.index()] = on_boundary(result, v);
+  for (int round = 0; round < lateral_planarize_rounds; ++round) {
+    bool moved = false;
+    for (const auto& [v, to] : planarize_moves(result)) {
+      if (fixed[v.index()]) continue;
+      result.set_position(v, to);
+      moved = true;
+    }
+    if (!moved) return;
+  }
+}
+
+}  // namespace dlfl::detail
