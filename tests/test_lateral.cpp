@@ -10,6 +10,7 @@
 #include <vector>
 
 #include <dlfl/analysis/concave_edges.h>
+#include <dlfl/analysis/mesh_info.h>
 #include <dlfl/build_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/geometry.h>
@@ -173,4 +174,13 @@ TEST_CASE("honeycomb-zw planarize: the structure of the plain step, every CCV on
     const double distance = glm::dot(face_normal(out, f), *q - face_centroid(out, f));
     CHECK(std::abs(distance) < 1e-12);
   }
+}
+
+TEST_CASE("mesh_info_json: the shape fields for closed meshes only") {
+  const std::string closed = mesh_info_json(build_mesh(l_prism_soup()), {.shape = true, .indent = -1});
+  CHECK(closed.find("\"concave_edges\":1,") != std::string::npos);
+  CHECK(closed.find("\"worst_concave_degrees\":90") != std::string::npos);
+  CHECK(mesh_info_json(build_mesh(l_prism_soup()), {.indent = -1}).find("concave") == std::string::npos);
+  CHECK(mesh_info_json(build_mesh(test::grid_soup(2, 2)), {.shape = true}).find("concave") ==
+        std::string::npos);
 }
