@@ -34,8 +34,7 @@ struct BinaryScheme {
 
 const std::vector<BinaryScheme>& binary_schemes() {
   static const std::vector<BinaryScheme> schemes = {
-      {"catmull-clark", false,
-       [](const Mesh& m, const BoundaryOptions& b) { return catmull_clark(m, b); },
+      {"catmull-clark", false, [](const Mesh& m, const BoundaryOptions& b) { return catmull_clark(m, b); },
        [](const OpenCounts& c) {
          // A quad per surface corner (C_s = 2E - B), an edge point per edge, a face point per surface face;
          // every hole keeps its face with twice the sides.

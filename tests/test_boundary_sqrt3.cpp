@@ -126,11 +126,7 @@ TEST_CASE("boundary curve, sqrt3: corners and marked vertices stay put, and stay
   }
   // Without the corner rule, the second step moves corner 3 = (3, 0) to (4, 19, 4) / 27 of (2, 0), itself
   // and (3, 1).
-  const Mesh smooth = steps_of(
-      [](const Mesh& x) {
-        return sqrt3(x, {BoundaryRule::curve, false});
-      },
-      grid, 2);
+  const Mesh smooth = steps_of([](const Mesh& x) { return sqrt3(x, {BoundaryRule::curve, false}); }, grid, 2);
   CHECK(close(smooth.position(VertexId(3)), glm::dvec3(77.0 / 27, 4.0 / 27, 0), 1e-15));
 
   // A marked vertex of a tube's bottom loop, which becomes an open chain from it around to itself.

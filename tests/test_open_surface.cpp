@@ -101,8 +101,7 @@ TEST_CASE(
   // V: 26 + 48 + 24 = 98 in the mesh; the hole region of each loop is now 4 x 4 = 16 quads around ...
   // (counted from the surface side instead): surface faces 4 x 16 = 64; the surface is a 16 x 4 grid of quads
   // on a cylinder: 16 x 5 = 80 vertices, 16 x 4 + 16 x 5 = 144 edges; 80 - 144 + 64 = 0.
-  check_surface(catmull_clark(catmull_clark(build_mesh(cylinder()), hole), hole),
-                {80, 144, 64, 2});
+  check_surface(catmull_clark(catmull_clark(build_mesh(cylinder()), hole), hole), {80, 144, 64, 2});
 }
 
 TEST_CASE(

@@ -51,7 +51,9 @@ void open_quad_origins(const Mesh& m, const Mesh& result, const detail::OpenLayo
 
 }  // namespace
 
-Mesh catmull_clark(const Mesh& input, Origins* origins) { return catmull_clark(input, BoundaryOptions{}, origins); }
+Mesh catmull_clark(const Mesh& input, Origins* origins) {
+  return catmull_clark(input, BoundaryOptions{}, origins);
+}
 
 Mesh catmull_clark(const Mesh& input, const BoundaryOptions& boundary, Origins* origins) {
   std::optional<Mesh> storage;

@@ -10,7 +10,8 @@ namespace detail {
 
 std::vector<ParamSpec> boundary_param_specs() {
   return {param("boundary", ParamType::text, "curve",
-                "open meshes: curve (the boundary rule) or hole (hole faces subdivided like faces)")
+                "open meshes: curve (the scheme's boundary rule) or hole (as before boundary rules: holes "
+                "subdivided like faces, or refused)")
               .one_of({"curve", "hole"})
               .before_version3("hole"),
           param("sharp_corners", ParamType::boolean, true,
