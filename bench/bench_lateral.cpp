@@ -8,6 +8,7 @@
 
 #include <dlfl/analysis/concave_edges.h>
 #include <dlfl/build_mesh.h>
+#include <dlfl/operations/hexagonalize.h>
 #include <dlfl/schemes/honeycomb.h>
 #include "lateral_meshes.h"
 #include "test_meshes.h"
@@ -23,8 +24,8 @@ struct Shape {
 
 std::vector<Shape> shapes() {
   std::vector<Shape> out;
-  for (int n : {4, 6, 8}) {
-    for (int rows : {1, 2, 3, 6}) {
+  for (int n : {4, 5, 6, 7, 8}) {
+    for (int rows : {1, 2, 3, 4, 5, 6}) {
       out.push_back(
           {std::to_string(n) + "-prism, " + std::to_string(rows) + " rows", test::prism_rows_soup(n, rows)});
     }
@@ -58,16 +59,17 @@ int main(int argc, char** argv) {
   std::printf("\n");
   for (const Shape& shape : shapes()) {
     const Mesh input = build_mesh(shape.soup);
-    for (bool planarize : {false, true}) {
+    for (const char* rule : {"plain", "planarize=1", "hexagonalize"}) {
       HoneycombParams p;
-      p.planarize = planarize;
-      Mesh m = input;
-      std::printf("| %s | %s |", shape.name.c_str(), planarize ? "planarize=1" : "plain");
+      p.planarize = rule == std::string("planarize=1");
+      Mesh m = rule == std::string("hexagonalize") ? hexagonalize(input) : input;
+      std::printf("| %s | %s |", shape.name.c_str(), rule);
       for (int s = 1; s <= steps; ++s) {
         m = honeycomb(m, p);
         std::printf(" %s |", cell(concave_edges(m)).c_str());
       }
       std::printf("\n");
+      std::fflush(stdout);
     }
   }
 }

@@ -169,7 +169,7 @@ Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p, Origins* origins) {
     }
   };
   Mesh result = detail::honeycomb_remesh(mesh, face_points, false, p.boundary, "honeycomb", origins).mesh;
-  if (p.planarize && detail::has_flat_region(mesh)) detail::planarize_new_faces(result);
+  if (p.planarize && detail::lateral_rule_applies(mesh)) detail::planarize_new_faces(result);
   return result;
 }
 
@@ -190,8 +190,9 @@ std::vector<ParamSpec> honeycomb_param_specs() {
 
 std::vector<ParamSpec> with_planarize_param(std::vector<ParamSpec> specs) {
   specs.push_back(param("planarize", ParamType::integer, 0,
-                        "1: planarize the new faces of a step from a mesh with a flat region, against "
-                        "lateral artifacts (docs/lateral_artifacts.md); 0: the plain step")
+                        "1: planarize the new faces of the step from a control mesh with a flat region when "
+                        "that bends no more than the plain step, against lateral artifacts "
+                        "(docs/lateral_artifacts.md); 0: the plain step")
                       .in(0, 1));
   return specs;
 }

@@ -176,8 +176,7 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, Origins* o
     const FaceId around = out.face_of_vertex[v.index()];
     result_points[around] = check_finite((1.0 - p.c) * mesh.position(v) + p.c * average, around);
   }
-  if (p.planarize && detail::has_flat_region(mesh)) {
-    detail::planarize_new_faces(result);
+  if (p.planarize && detail::lateral_rule_applies(mesh) && detail::planarize_new_faces(result)) {
     // A CCV off its face's plane would bend the face's copy at the next step.
     for (FaceId f : result.faces()) {
       const FacePlane plane = face_plane(result, f);

@@ -4,6 +4,7 @@
 #include <glm/geometric.hpp>
 #include <vector>
 
+#include <dlfl/analysis/concave_edges.h>
 #include <dlfl/analysis/convex_polyhedron.h>
 #include <dlfl/geometry.h>
 #include <dlfl/operations/detail/planarize_moves.h>
@@ -37,9 +38,25 @@ bool has_flat_region(const Mesh& mesh) {
   return false;
 }
 
-void planarize_new_faces(Mesh& result) {
+bool lateral_rule_applies(const Mesh& mesh) {
+  bool control = false;
+  for (VertexId v : mesh.vertices()) {
+    if (mesh.valence(v) != 3 && !mesh.is_point_sphere(v) && !on_boundary(mesh, v)) {
+      control = true;
+      break;
+    }
+  }
+  return control && has_flat_region(mesh);
+}
+
+bool planarize_new_faces(Mesh& result) {
+  const ConcaveEdges plain = concave_edges(result);
+  std::vector<glm::dvec3> plain_positions(result.vertex_capacity());
   std::vector<bool> fixed(result.vertex_capacity(), false);
-  for (VertexId v : result.vertices()) fixed[v.index()] = on_boundary(result, v);
+  for (VertexId v : result.vertices()) {
+    fixed[v.index()] = on_boundary(result, v);
+    plain_positions[v.index()] = result.position(v);
+  }
   for (int round = 0; round < lateral_planarize_rounds; ++round) {
     bool moved = false;
     for (const auto& [v, to] : planarize_moves(result)) {
@@ -47,8 +64,13 @@ void planarize_new_faces(Mesh& result) {
       result.set_position(v, to);
       moved = true;
     }
-    if (!moved) return;
+    if (!moved) break;
   }
+  const ConcaveEdges planarized = concave_edges(result);
+  if (planarized.concave <= plain.concave && planarized.mean_dihedral_degrees <= plain.mean_dihedral_degrees)
+    return true;
+  for (VertexId v : result.vertices()) result.set_position(v, plain_positions[v.index()]);
+  return false;
 }
 
 }  // namespace dlfl::detail
