@@ -8,10 +8,10 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/analysis/detail/best_fit_plane.h>
+#include <dlfl/analysis/detail/planarize_moves.h>
 #include <dlfl/navigation.h>
-#include <dlfl/operations/detail/best_fit_plane.h>
 #include <dlfl/operations/detail/operation_table.h>
-#include <dlfl/operations/detail/planarize_moves.h>
 #include <dlfl/operations/detail/refusal.h>
 
 namespace dlfl {

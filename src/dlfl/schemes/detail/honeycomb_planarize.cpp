@@ -6,8 +6,8 @@
 
 #include <dlfl/analysis/concave_edges.h>
 #include <dlfl/analysis/convex_polyhedron.h>
+#include <dlfl/analysis/detail/planarize_moves.h>
 #include <dlfl/geometry.h>
-#include <dlfl/operations/detail/planarize_moves.h>
 
 namespace dlfl::detail {
 namespace {

@@ -11,7 +11,7 @@
 
 namespace dlfl::detail {
 
-/// Rounds of the `planarize` operation's moves (operations/detail/planarize_moves.h) that one step makes.
+/// Rounds of the `planarize` operation's moves (analysis/detail/planarize_moves.h) that one step makes.
 inline constexpr int lateral_planarize_rounds = 50;
 
 /// True when two distinct surface faces that share an edge lie in one plane: unit normals within 1e-9 of

@@ -1,11 +1,11 @@
-#include <dlfl/operations/detail/planarize_moves.h>
+#include <dlfl/analysis/detail/planarize_moves.h>
 
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
 
+#include <dlfl/analysis/detail/best_fit_plane.h>
 #include <dlfl/navigation.h>
-#include <dlfl/operations/detail/best_fit_plane.h>
 
 namespace dlfl::detail {
 namespace {
