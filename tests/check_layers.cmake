@@ -1,12 +1,12 @@
 # The floors of docs/architecture.md hold: no file under src/dlfl includes a header of a floor above its own,
 # nor of another folder on its own floor. Called by CTest with -DSOURCE_DIR=...
 function(floor_of path out_floor out_folder)
-  if(path MATCHES "^dlfl/(io|analysis|schemes|cells|operations|history)/")
+  if(path MATCHES "^dlfl/(io|analysis|schemes|cells|operations|render|history)/")
     set(folder ${CMAKE_MATCH_1})
   else()
     set(folder kernel)
   endif()
-  set(floors kernel 0 io 1 analysis 1 schemes 2 cells 2 operations 3 history 4)
+  set(floors kernel 0 io 1 analysis 1 schemes 2 cells 2 operations 3 render 3 history 4)
   list(FIND floors ${folder} at)
   math(EXPR at "${at} + 1")
   list(GET floors ${at} floor)

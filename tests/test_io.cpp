@@ -211,7 +211,7 @@ TEST_CASE("io: round trip through every format keeps counts and faces and exact 
                         {"grid", grid_soup(), 16, 24, 10, 1}};
   struct Target {
     const char* file;
-    bool binary_ply;
+    bool binary;
   };
   const Target targets[] = {{"m.obj", true}, {"m.off", true}, {"m.ply", false}, {"m.ply", true}};
   for (const Case& c : cases) {
@@ -223,9 +223,9 @@ TEST_CASE("io: round trip through every format keeps counts and faces and exact 
     for (const Target& t : targets) {
       CAPTURE(c.name);
       CAPTURE(t.file);
-      CAPTURE(t.binary_ply);
+      CAPTURE(t.binary);
       ScratchDir dir;
-      write_mesh(original, dir / t.file, {t.binary_ply});
+      write_mesh(original, dir / t.file, {t.binary});
       CHECK(dir.entries() == std::vector<std::string>{t.file});
       const Mesh back = read_mesh(dir / t.file);
       CHECK(back.num_vertices() == c.vertices);
@@ -280,7 +280,7 @@ TEST_CASE("io: writers produce the expected text and bytes") {
           "OFF\n4 4 0\n0.1 -0 1e-300\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n");
   }
   SUBCASE("ply ascii") {
-    write_mesh(m, dir / "t.ply", {.binary_ply = false});
+    write_mesh(m, dir / "t.ply", {.binary = false});
     CHECK(read_text(dir / "t.ply") ==
           "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
           "element face 4\nproperty list uchar uint vertex_indices\nend_header\n"
@@ -524,17 +524,19 @@ TEST_CASE("io: format by extension") {
   CHECK(format_for_path("MESH.OBJ") == MeshFormat::obj);
   CHECK(format_for_path("x.Off") == MeshFormat::off);
   CHECK(format_for_path("x.y.PLY") == MeshFormat::ply);
-  CHECK_THROWS_WITH_AS(format_for_path("mesh.stl"), doctest::Contains(".stl"), IoError);
-  CHECK_THROWS_WITH_AS(format_for_path("mesh.stl"), doctest::Contains("mesh.stl"), IoError);
+  CHECK(format_for_path("x.Stl") == MeshFormat::stl);
+  CHECK(format_for_path("x.GLB") == MeshFormat::glb);
+  CHECK_THROWS_WITH_AS(format_for_path("mesh.fbx"), doctest::Contains(".fbx"), IoError);
+  CHECK_THROWS_WITH_AS(format_for_path("mesh.fbx"), doctest::Contains("mesh.fbx"), IoError);
   CHECK_THROWS_AS(format_for_path("mesh"), IoError);
   CHECK_THROWS_AS(format_for_path("obj"), IoError);
 
   ScratchDir dir;
-  write_text(dir / "cube.stl", "solid\n");
-  CHECK_THROWS_WITH_AS(read_mesh(dir / "cube.stl"), doctest::Contains(".stl"), IoError);
+  write_text(dir / "cube.fbx", "solid\n");
+  CHECK_THROWS_WITH_AS(read_mesh(dir / "cube.fbx"), doctest::Contains(".fbx"), IoError);
   CHECK_THROWS_WITH_AS(write_mesh(build_mesh(cube_soup()), dir / "cube.dae"), doctest::Contains(".dae"),
                        IoError);
-  CHECK(dir.entries() == std::vector<std::string>{"cube.stl"});
+  CHECK(dir.entries() == std::vector<std::string>{"cube.fbx"});
 }
 
 // ---- bad input

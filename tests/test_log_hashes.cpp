@@ -119,3 +119,27 @@ TEST_CASE("tool: replay fails naming the op when a non-self-contained input chan
   CHECK(fs::exists(dir / "c.obj"));
 }
 #endif
+
+TEST_CASE("log replay: after_op sees each op's mesh in order, the last one the replay's result") {
+  const auto in = scratch_file("after_op.obj", tetrahedron_obj);
+  Editor::Options options;
+  options.embed_meshes = true;
+  Editor editor(options);
+  editor.set_mesh(read_mesh(in), in);
+  editor.subdivide("honeycomb");
+  editor.undo();
+  const Mesh tetrahedron = read_mesh(in);
+  std::vector<std::string> seen;
+  std::vector<std::size_t> faces;
+  ReplayOptions replay;
+  replay.after_op = [&](const Editor& at, std::size_t op) {
+    CHECK(op == seen.size());
+    seen.push_back(at.log().back().name);
+    faces.push_back(at.mesh().num_faces());
+  };
+  const Editor replayed = replay_log(log_text(editor), "log", replay);
+  CHECK(seen == std::vector<std::string>{"load", "subdivide", "undo"});
+  // Honeycomb on a tetrahedron: a hexagon per triangle and a triangle per vertex, 4 + 4 faces; undo gives 4.
+  CHECK(faces == std::vector<std::size_t>{4, 8, 4});
+  CHECK(replayed.mesh() == tetrahedron);
+}

@@ -73,7 +73,7 @@ TEST_CASE("write faults: a full disk while writing any format leaves the old fil
       {"ascii.ply",
        [&](const auto& p) {
          WriteOptions ascii;
-         ascii.binary_ply = false;
+         ascii.binary = false;
          write_mesh(editor.mesh(), p, ascii);
        }},
       {"mesh.json", [&](const auto& p) { write_mesh(editor.mesh(), p); }},

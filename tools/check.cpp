@@ -14,7 +14,7 @@ Action add_check(CLI::App& app) {
   auto path = std::make_shared<std::string>();
   cmd->add_option(
          "MESH", *path,
-         "Mesh file (.obj, .off, .ply, .json). A .json file may hold any DLFL state: every violation "
+         "Mesh file (.obj, .off, .ply, .stl, .json). A .json file may hold any DLFL state: every violation "
          "is listed. The other formats are refused by their reader with the line at fault")
       ->required();
   return [path] {

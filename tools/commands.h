@@ -21,5 +21,7 @@ Action add_replay(CLI::App& app);
 Action add_ops(CLI::App& app);
 Action add_edit(CLI::App& app);
 Action add_schemes(CLI::App& app);
+Action add_render(CLI::App& app);
+Action add_view(CLI::App& app);
 
 }  // namespace dlfl::tool

@@ -10,15 +10,16 @@
 namespace dlfl::tool {
 
 Action add_convert(CLI::App& app) {
-  auto* cmd = app.add_subcommand("convert",
-                                 "Convert a mesh between OBJ, OFF, PLY and JSON, or a cell complex between "
-                                 "VTK and OBJ (format by extension)");
+  auto* cmd = app.add_subcommand(
+      "convert",
+      "Convert a mesh between OBJ, OFF, PLY, STL and JSON (or to glTF, .glb), or a cell complex between "
+      "VTK and OBJ (format by extension)");
   auto in = std::make_shared<std::string>();
   auto out = std::make_shared<std::string>();
   auto ascii = std::make_shared<bool>(false);
   cmd->add_option("IN", *in, "Input mesh")->required();
   cmd->add_option("OUT", *out, "Output mesh")->required();
-  cmd->add_flag("--ascii", *ascii, "Write PLY or VTK as ASCII instead of binary");
+  cmd->add_flag("--ascii", *ascii, "Write PLY, STL or VTK as ASCII instead of binary");
   return [in, out, ascii] {
     check_files({{"IN", *in}}, {{"OUT", *out}});
     if (is_cell_complex_file(*in)) {
@@ -28,7 +29,7 @@ Action add_convert(CLI::App& app) {
       return ok;
     }
     WriteOptions options;
-    options.binary_ply = !*ascii;
+    options.binary = !*ascii;
     FileReport reading("read", *in);
     const Mesh mesh = read_mesh(*in);
     reading.done(mesh);

@@ -36,6 +36,8 @@ int main(int argc, char** argv) {
   add(add_ops);
   add(add_edit);
   add(add_schemes);
+  add(add_render);
+  add(add_view);
 
   try {
     app.parse(argc, argv);

@@ -21,9 +21,9 @@ Action add_edit(CLI::App& app) {
     std::vector<std::string> ops;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("IN", a->files.in, "Input mesh (.obj, .off, .ply, .json)")->required();
+  cmd->add_option("IN", a->files.in, "Input mesh (.obj, .off, .ply, .stl, .json)")->required();
   add_output_options(cmd, a->files, "Output mesh (format by extension; .json keeps every handle)",
-                     "Write PLY as ASCII instead of binary");
+                     "Write PLY or STL as ASCII instead of binary");
   cmd->add_option(
          "--op", a->ops,
          "An operation: 'NAME key=value ...' (repeatable, applied in order). A handle is its number, "

@@ -37,7 +37,7 @@ void save_editor(const Editor& editor, const EditorFiles& files) {
   FileReport report("write", files.log.empty() ? files.out : files.out + " and " + files.log);
   FileBatch batch;
   WriteOptions write;
-  write.binary_ply = !files.ascii;
+  write.binary = !files.ascii;
   write.batch = &batch;
   write_mesh(editor.mesh(), files.out, write);
   if (!files.log.empty()) write_log(editor, files.log, &batch);

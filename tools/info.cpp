@@ -21,7 +21,7 @@ Action add_info(CLI::App& app) {
   };
   auto a = std::make_shared<Args>();
   cmd->add_option("MESH", a->path,
-                  "Mesh file (.obj, .off, .ply, .json), or cell complex (.vtk, .obj with p or l lines)")
+                  "Mesh file (.obj, .off, .ply, .stl, .json), or cell complex (.vtk, .obj with p or l lines)")
       ->required();
   cmd->add_flag(
       "--angles", a->angles,

@@ -19,7 +19,7 @@ Action add_replay(CLI::App& app) {
   cmd->add_option("LOG", *log, "Operation log (.json)")->required();
   cmd->add_option("-o,--output", *out, "Output mesh (format by extension; .json keeps every handle)")
       ->required();
-  cmd->add_flag("--ascii", *ascii, "Write PLY as ASCII instead of binary little-endian");
+  cmd->add_flag("--ascii", *ascii, "Write PLY or STL as ASCII instead of binary");
   cmd->add_flag("--no-verify", *no_verify,
                 "Do not check the hashes the log carries (of each input read again, and of the final mesh)");
   return [log, out, ascii, no_verify] {
@@ -33,7 +33,7 @@ Action add_replay(CLI::App& app) {
     }();
     replaying.done(editor.mesh());  // nothing is written unless the whole log replays
     WriteOptions write;
-    write.binary_ply = !*ascii;
+    write.binary = !*ascii;
     FileReport writing("write", *out);
     write_mesh(editor.mesh(), *out, write);
     writing.done(editor.mesh());

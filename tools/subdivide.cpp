@@ -17,6 +17,7 @@
 #include "editor_session.h"
 #include "feedback.h"
 #include "file_checks.h"
+#include "scheme_options.h"
 
 namespace dlfl::tool {
 
@@ -99,35 +100,22 @@ Exit subdivide_cells(const Args& a) {
 Action add_subdivide(CLI::App& app) {
   auto* cmd =
       app.add_subcommand("subdivide", "Apply a subdivision scheme, optionally recording an operation log");
-  struct Args {
+  struct Args : SchemeOptions {
     EditorFiles files;
-    std::string scheme;
-    int iterations = 1;
-    std::vector<std::string> params;
   };
   auto a = std::make_shared<Args>();
-  cmd->add_option("IN", a->files.in,
-                  "Input mesh (.obj, .off, .ply, .json), or cell complex (.vtk, .obj with p or l lines) for "
-                  "-s mlca")
+  cmd->add_option(
+         "IN", a->files.in,
+         "Input mesh (.obj, .off, .ply, .stl, .json), or cell complex (.vtk, .obj with p or l lines) for "
+         "-s mlca")
       ->required();
-  std::string names;
-  for (const auto& n : scheme_names()) names += (names.empty() ? "" : ", ") + n;
-  cmd->add_option("-s,--scheme", a->scheme, "Scheme: " + names)->required();
-  cmd->add_option("-n,--iterations", a->iterations, "Number of steps (default 1)")->check(CLI::Range(0, 64));
-  cmd->add_option("--param", a->params,
-                  "Scheme parameter NAME=VALUE (repeatable), read as the parameter's type: t=0.5, "
-                  "center=0,0,0, random=true, pattern=H4P4 ('dlfl schemes NAME' lists them)");
+  add_scheme_options(cmd, *a, true);
   add_output_options(cmd, a->files, "Output mesh (format by extension)",
-                     "Write PLY or VTK as ASCII instead of binary");
+                     "Write PLY, STL or VTK as ASCII instead of binary");
   return [a] {
     check_editor_files(a->files);
     if (is_cell_complex_file(a->files.in)) return subdivide_cells(*a);
-    Params params;
-    for (const auto& p : a->params) {
-      auto [name, value] = parse_assignment(p);
-      if (params.has(name)) throw ParameterError("parameter " + name + " given twice", name);
-      params[name] = std::move(value);
-    }
+    const Params params = a->parsed_params();
     Editor editor = open_editor(a->files);
     const double predicted_faces = plan_run(editor.mesh(), a->scheme, params, a->iterations);
     {

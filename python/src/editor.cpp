@@ -162,7 +162,8 @@ making it self-contained; undo_limit bounds the history (0: unlimited).)doc",
   m.def(
       "replay",
       [](py::handle log, bool verify) {
-        const ReplayOptions options{.verify = verify};
+        ReplayOptions options;
+        options.verify = verify;
         if (py::isinstance<py::dict>(log)) {
           const std::string text = py::module_::import("json").attr("dumps")(log).cast<std::string>();
           py::gil_scoped_release no_gil;

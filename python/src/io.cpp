@@ -113,7 +113,8 @@ void bind_io(py::module_& m) {
         py::gil_scoped_release no_gil;
         return MeshRef(read_mesh(p));
       },
-      "Reads a mesh file, format by extension (.obj, .off, .ply, .json; .json keeps every handle). Boundary "
+      "Reads a mesh file, format by extension (.obj, .off, .ply, .stl, .json; .json keeps every handle). "
+      "Boundary "
       "loops become hole faces. Raises IoError (path, line).",
       py::arg("path"));
   m.def(
@@ -121,11 +122,12 @@ void bind_io(py::module_& m) {
       [](const MeshRef& mesh, py::handle path, bool ascii) {
         const std::string p = path_text(path);
         mesh.read_without_gil([&](const Mesh& x) {
-          write_mesh(x, p, {.binary_ply = !ascii});
+          write_mesh(x, p, {.binary = !ascii});
           return 0;
         });
       },
-      "Writes a mesh, format by extension, atomically (PLY binary unless ascii). Polygon formats leave out "
+      "Writes a mesh, format by extension, atomically (PLY and STL binary unless ascii; .glb too). Polygon "
+      "formats leave out "
       "holes and point spheres and raise TopologyError for a 2-gon or a double edge; .json keeps everything.",
       py::arg("mesh"), py::arg("path"), py::arg("ascii") = false);
   bind_cell_complex(m);

@@ -79,8 +79,8 @@ def test_io_error_has_the_path_and_the_line(tmp_path):
         dlfl.read_mesh(tmp_path / "missing.off")
     assert e.value.path == str(tmp_path / "missing.off") and e.value.line is None
     with pytest.raises(dlfl.IoError) as e:
-        dlfl.write_mesh(dlfl.Mesh.from_arrays(CUBE_POSITIONS, CUBE_FACES), tmp_path / "cube.stl")
-    assert e.value.path == str(tmp_path / "cube.stl")
+        dlfl.write_mesh(dlfl.Mesh.from_arrays(CUBE_POSITIONS, CUBE_FACES), tmp_path / "cube.fbx")
+    assert e.value.path == str(tmp_path / "cube.fbx")
 
 
 def test_log_error_has_the_op_index_and_the_field(tmp_path):

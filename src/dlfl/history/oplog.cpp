@@ -254,8 +254,10 @@ Editor replay_log(std::string_view text, const std::string& name, const ReplayOp
     throw LogError(name, LogError::npos, "final_hash", "expected a string");
   }
   Editor editor(options);
-  for (std::size_t i = 0; i < ops->size(); ++i)
+  for (std::size_t i = 0; i < ops->size(); ++i) {
     replay_op(editor, (*ops)[i], i, name, replay, version->get<int>());
+    if (replay.after_op) replay.after_op(editor, i);
+  }
   if (replay.verify && final_hash != log.end() && *final_hash != mesh_hash(editor.mesh())) {
     throw LogError(name, LogError::npos, "final_hash",
                    "the replay ends in a mesh of hash " + mesh_hash(editor.mesh()) + ", the log expects " +

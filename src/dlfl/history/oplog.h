@@ -5,6 +5,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <string_view>
 
@@ -47,6 +48,10 @@ struct ReplayOptions {
   /// hold the same mesh) and of the final mesh ("final_hash"). Off, they are ignored, and the replay uses the
   /// input files as they are now.
   bool verify = true;
+  /// Called after each op has run, with the editor and the op's index: `editor.log().back()` is that op as
+  /// the editor recorded it. For callers that want every intermediate mesh (the viewer's steps); what it
+  /// throws ends the replay.
+  std::function<void(const Editor& editor, std::size_t op)> after_op;
 };
 
 /// Replays log text in a fresh editor (with the log's undo limit) and returns it; `name` is used in

@@ -3,6 +3,7 @@
 #include <dlfl/io/off.h>
 #include <dlfl/io/parsed_polygons.h>
 #include <dlfl/io/ply.h>
+#include <dlfl/io/stl.h>
 
 #include <algorithm>
 #include <cctype>
@@ -14,7 +15,9 @@
 #include <dlfl/build_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/io/atomic_file.h>
+#include <dlfl/io/detail/gltf_file.h>
 #include <dlfl/io/detail/text_io.h>
+#include <dlfl/io/detail/triangles.h>
 #include <dlfl/io/json_mesh.h>
 
 namespace dlfl {
@@ -25,10 +28,12 @@ MeshFormat format_for_path(const std::filesystem::path& path) {
   if (ext == ".off") return MeshFormat::off;
   if (ext == ".ply") return MeshFormat::ply;
   if (ext == ".json") return MeshFormat::json;
-  if (ext.empty()) throw IoError("no file extension; expected .obj, .off, .ply or .json", path.string());
-  throw IoError(
-      "unknown mesh file extension '" + path.extension().string() + "'; expected .obj, .off, .ply or .json",
-      path.string());
+  if (ext == ".stl") return MeshFormat::stl;
+  if (ext == ".glb") return MeshFormat::glb;
+  constexpr const char* known = ".obj, .off, .ply, .stl, .json or .glb";
+  if (ext.empty()) throw IoError(std::string("no file extension; expected ") + known, path.string());
+  throw IoError("unknown mesh file extension '" + path.extension().string() + "'; expected " + known,
+                path.string());
 }
 
 Mesh build_mesh(const ParsedPolygons& parsed, const std::string& name) {
@@ -54,36 +59,11 @@ ParsedPolygons parse_off(std::istream& in, const std::string& name) {
 ParsedPolygons parse_ply(std::istream& in, const std::string& name) {
   return io_detail::parse_ply_text(io_detail::read_all(in, name), name);
 }
+ParsedPolygons parse_stl(std::istream& in, const std::string& name) {
+  return io_detail::parse_stl_text(io_detail::read_all(in, name), name);
+}
 
 namespace {
-
-// A byte that no text file holds: NUL and the other C0 controls but \t \n \v \f \r, and DEL. Bytes from
-// 0x80 up are allowed (UTF-8 in comments and names).
-constexpr bool is_binary_byte(unsigned char c) { return c < 9 || (c >= 14 && c < 32) || c == 127; }
-
-// Refuses text with a binary byte, naming its line (1-based). Scanned in blocks with a branch-free test that
-// the compiler vectorises, so that checking a large file costs a few milliseconds, not a second parse.
-void check_text(std::string_view text, const std::string& name) {
-  const auto* bytes = reinterpret_cast<const unsigned char*>(text.data());
-  constexpr std::size_t block = 4096;
-  for (std::size_t begin = 0; begin < text.size(); begin += block) {
-    const std::size_t end = std::min(text.size(), begin + block);
-    std::uint8_t found = 0;  // bytes throughout, so that the loop runs 16 or 32 bytes a step
-    for (std::size_t i = begin; i < end; ++i) {
-      const std::uint8_t c = bytes[i];
-      found |= std::uint8_t(c < 9) | std::uint8_t(std::uint8_t(c - 14) < 18) | std::uint8_t(c == 127);
-    }
-    if (found == 0) continue;
-    std::size_t at = begin;
-    while (!is_binary_byte(bytes[at])) ++at;
-    const auto line = static_cast<std::size_t>(
-                          std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n')) +
-                      1;
-    throw IoError("binary data at line " + std::to_string(line) + " (byte " +
-                      std::to_string(unsigned(bytes[at])) + "): not a text file",
-                  name, line);
-  }
-}
 
 // A PLY file is text up to the end of its header; a binary one goes on in binary.
 std::string_view ply_header(std::string_view text) {
@@ -97,7 +77,7 @@ Mesh with_vertices(Mesh mesh, const std::string& name) {
 }
 
 Mesh read_mesh_text(MeshFormat format, const std::string& text, const std::string& name) {
-  check_text(format == MeshFormat::ply ? ply_header(text) : std::string_view(text), name);
+  io_detail::check_text(format == MeshFormat::ply ? ply_header(text) : std::string_view(text), name);
   if (text.find_first_not_of(" \t\n\v\f\r") == std::string::npos)
     throw IoError("no vertices: the file is empty", name);
   switch (format) {
@@ -106,7 +86,9 @@ Mesh read_mesh_text(MeshFormat format, const std::string& text, const std::strin
     case MeshFormat::off:
       return build_mesh(io_detail::parse_off_text(text, name), name);
     case MeshFormat::ply:
-      break;
+    case MeshFormat::stl:
+    case MeshFormat::glb:
+      break;  // PLY below; STL and glTF are not text, see read_mesh
     case MeshFormat::json: {
       nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
       if (doc.is_discarded()) throw IoError("not valid JSON", name);
@@ -121,6 +103,12 @@ Mesh read_mesh_text(MeshFormat format, const std::string& text, const std::strin
 Mesh read_mesh(const std::filesystem::path& path) {
   const MeshFormat format = format_for_path(path);
   const std::string name = path.string();
+  if (format == MeshFormat::glb) {
+    throw IoError("glTF is an output format here; read OBJ, OFF, PLY, STL or the native JSON", name);
+  }
+  if (format == MeshFormat::stl) {
+    return with_vertices(build_mesh(io_detail::parse_stl_text(io_detail::read_file(path), name), name), name);
+  }
   return with_vertices(read_mesh_text(format, io_detail::read_file(path), name), name);
 }
 
@@ -129,45 +117,62 @@ ValidationReport validate_mesh_file(const std::filesystem::path& path, std::size
   if (format != MeshFormat::json) return validate(read_mesh(path), max_violations);
   const std::string name = path.string();
   const std::string text = io_detail::read_file(path);
-  check_text(text, name);
+  io_detail::check_text(text, name);
   nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
   if (doc.is_discarded())
     throw IoError(text.empty() ? "no vertices: the file is empty" : "not valid JSON", name);
   return validate_json_mesh(doc, name, max_violations);
 }
 
+namespace {
+
+// Stages the mesh in `batch`. Whatever a format cannot hold is refused before the file is staged.
+void stage_mesh(const Mesh& mesh, const std::filesystem::path& path, MeshFormat format, bool binary,
+                FileBatch& batch) {
+  const std::string name = path.string();
+  switch (format) {
+    case MeshFormat::json: {
+      const std::string text = mesh_to_json(mesh).dump();
+      batch.stage(path, [&](std::ostream& out) { out << text << '\n'; });
+      return;
+    }
+    case MeshFormat::glb: {
+      const io_detail::GlbFile glb(mesh, name);
+      batch.stage(
+          path, [&](std::ostream& out) { glb.write(out); }, true);
+      return;
+    }
+    case MeshFormat::stl: {
+      const io_detail::MeshTriangles triangles = io_detail::mesh_triangles(mesh, name);
+      batch.stage(
+          path, [&](std::ostream& out) { io_detail::write_stl_triangles(out, mesh, triangles, binary); },
+          binary);
+      return;
+    }
+    case MeshFormat::obj:
+    case MeshFormat::off:
+    case MeshFormat::ply:
+      break;
+  }
+  const PolygonSoup soup = to_polygons(mesh);
+  binary = binary && format == MeshFormat::ply;
+  batch.stage(
+      path,
+      [&](std::ostream& out) {
+        if (format == MeshFormat::obj) write_obj(out, soup);
+        if (format == MeshFormat::off) write_off(out, soup);
+        if (format == MeshFormat::ply) write_ply(out, soup, binary);
+      },
+      binary);
+}
+
+}  // namespace
+
 void write_mesh(const Mesh& mesh, const std::filesystem::path& path, const WriteOptions& options) {
   const MeshFormat format = format_for_path(path);
   if (mesh.num_vertices() == 0) throw IoError("no vertices: an empty mesh makes no mesh file", path.string());
   FileBatch own;
-  FileBatch& batch = options.batch ? *options.batch : own;
-  if (format == MeshFormat::json) {
-    const std::string text = mesh_to_json(mesh).dump();
-    batch.stage(path, [&](std::ostream& out) { out << text << '\n'; });
-    if (!options.batch) own.commit();
-    return;
-  }
-  // Converting first means a mesh that an indexed polygon file cannot hold fails before any file is touched.
-  const PolygonSoup soup = to_polygons(mesh);
-  const bool binary = format == MeshFormat::ply && options.binary_ply;
-  batch.stage(
-      path,
-      [&](std::ostream& out) {
-        switch (format) {
-          case MeshFormat::obj:
-            write_obj(out, soup);
-            break;
-          case MeshFormat::off:
-            write_off(out, soup);
-            break;
-          case MeshFormat::ply:
-            write_ply(out, soup, binary);
-            break;
-          case MeshFormat::json:
-            break;  // handled above
-        }
-      },
-      binary);
+  stage_mesh(mesh, path, format, options.binary, options.batch ? *options.batch : own);
   if (!options.batch) own.commit();
 }
 

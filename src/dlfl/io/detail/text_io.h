@@ -40,6 +40,12 @@ std::string lower_extension(const std::filesystem::path& path);
 ParsedPolygons parse_obj_text(std::string_view text, const std::string& name);
 ParsedPolygons parse_off_text(std::string_view text, const std::string& name);
 ParsedPolygons parse_ply_text(std::string_view text, const std::string& name);
+/// STL's parser takes binary data as well as text (stl.h).
+ParsedPolygons parse_stl_text(std::string_view data, const std::string& name);
+
+/// Refuses text holding a byte that no text file has (NUL and the other C0 controls but \t \n \v \f \r, and
+/// DEL; bytes from 0x80 up are allowed, as in UTF-8): IoError naming `name` and the byte's line (1-based).
+void check_text(std::string_view text, const std::string& name);
 
 inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
 
@@ -267,6 +273,11 @@ class BlockWriter {
   void number(double value) {
     char* p = room(32);  // the longest shortest-form double is 24 characters
     size_ = static_cast<std::size_t>(std::to_chars(p, p + 32, value).ptr - buffer_.get());
+  }
+  /// A float in its shortest round-trip form (STL text, which so holds the values that binary STL holds).
+  void number(float value) {
+    char* p = room(24);  // the longest shortest-form float is 15 characters
+    size_ = static_cast<std::size_t>(std::to_chars(p, p + 24, value).ptr - buffer_.get());
   }
   void number(std::uint64_t value) {
     char* p = room(24);
