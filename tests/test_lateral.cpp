@@ -317,6 +317,96 @@ TEST_CASE("hexagonalize: an open grid is cut along its border, which keeps its p
   CHECK(worst_nonplanarity(out) == 0.0);
 }
 
+TEST_CASE("hexagonalize: named attributes carried to the elements that stand for an element of their kind") {
+  // The cube with a distinct value on every element (its index + 1; 0 the default) and a point sphere. By
+  // hand (see the counts above): each vertex's hub keeps its value (8 vertices); each face's shrunken square
+  // (6 faces: centroid and normal the face's); each edge's 5 edges: the two halves of its crossing (from a
+  // point of a face to a point on the edge) and the three along it (hub, point, point, hub); each corner c's
+  // 3 corners at the point of c (one in the shrunken square, two in the piece of c's vertex, at the points of
+  // c and prev(c)) lie in c's face. Everything else reads the default: 56 - 8 vertices, 84 - 60 edges,
+  // 30 - 6 faces, 168 - 72 corners.
+  Mesh cube = test::cube();
+  const VertexId lone = cube.create_vertex({5.0, 0.0, 0.0});
+  cube.add_attribute(ElementKind::vertex, "v", AttributeValue(0));
+  cube.add_attribute(ElementKind::edge, "e", AttributeValue(0));
+  cube.add_attribute(ElementKind::face, "f", AttributeValue(0));
+  cube.add_attribute(ElementKind::corner, "c", AttributeValue(glm::dvec3(0.0)));
+  for (VertexId v : cube.vertices())
+    cube.set_attribute_value(ElementKind::vertex, "v", v.index(), int(v.index()) + 1);
+  for (EdgeId e : cube.edges())
+    cube.set_attribute_value(ElementKind::edge, "e", e.index(), int(e.index()) + 1);
+  for (FaceId f : cube.faces())
+    cube.set_attribute_value(ElementKind::face, "f", f.index(), int(f.index()) + 1);
+  for (CornerId c : cube.corners()) {
+    cube.set_attribute_value(ElementKind::corner, "c", c.index(), glm::dvec3(c.index() + 1, 0.0, 0.0));
+  }
+  const Mesh out = test::apply_and_check(cube, "hexagonalize", {}, {.v = 48, .e = 72, .f = 24}).mesh;
+  const auto value = [&](ElementKind kind, const char* name, std::uint32_t i) {
+    return std::get<int>(out.attribute_value(kind, name, i));
+  };
+  std::size_t carried = 0;
+  for (VertexId v : out.vertices()) {
+    const int k = value(ElementKind::vertex, "v", v.index());
+    if (k == 0) continue;
+    ++carried;
+    CHECK(out.position(v) == cube.position(VertexId(std::uint32_t(k - 1))));
+  }
+  CHECK(carried == 9);  // 8 hubs and the point sphere
+  carried = 0;
+  for (FaceId f : out.faces()) {
+    const int k = value(ElementKind::face, "f", f.index());
+    if (k == 0 || out.is_point_sphere(out.vertex(out.first_corner(f)))) continue;
+    ++carried;
+    const FaceId source(std::uint32_t(k - 1));
+    CHECK(out.size(f) == 4);
+    CHECK(glm::length(face_centroid(out, f) - face_centroid(cube, source)) < 1e-12);
+    CHECK(glm::length(face_normal(out, f) - face_normal(cube, source)) < 1e-12);
+  }
+  CHECK(carried == 6);
+  std::vector<int> edges_of(cube.edge_capacity(), 0);
+  for (EdgeId e : out.edges()) {
+    const int k = value(ElementKind::edge, "e", e.index());
+    if (k == 0) continue;
+    const EdgeId source(std::uint32_t(k - 1));
+    ++edges_of[source.index()];
+    // One end of the edge is on the input edge.
+    const glm::dvec3 a = cube.position(cube.from(source)), b = cube.position(cube.to(source));
+    const auto on_edge = [&](VertexId v) {
+      const glm::dvec3 p = out.position(v);
+      return glm::length(glm::cross(p - a, b - a)) < 1e-12 && glm::dot(p - a, b - p) >= 0.0;
+    };
+    CHECK((on_edge(out.from(e)) || on_edge(out.to(e))));
+  }
+  for (EdgeId e : cube.edges()) CHECK(edges_of[e.index()] == 5);
+  std::vector<int> corners_of(cube.corner_capacity(), 0);
+  carried = 0;
+  for (CornerId c : out.corners()) {
+    const double k = std::get<glm::dvec3>(out.attribute_value(ElementKind::corner, "c", c.index())).x;
+    if (k == 0.0) continue;
+    const CornerId source(std::uint32_t(k) - 1);
+    ++corners_of[source.index()];
+    ++carried;
+    if (cube.is_point_sphere(cube.vertex(source))) continue;
+    const FaceId f = cube.face(source);
+    CHECK(std::abs(glm::dot(out.position(out.vertex(c)) - face_centroid(cube, f), face_normal(cube, f))) <
+          1e-12);
+  }
+  CHECK(corners_of[cube.corner(lone).index()] == 1);
+  CHECK(carried == 72 + 1);
+}
+
+TEST_CASE("hexagonalize: a hole keeps its face attribute") {
+  Mesh grid = build_mesh(test::grid_soup(3, 2));
+  grid.add_attribute(ElementKind::face, "mark", AttributeValue(false));
+  for (FaceId f : grid.faces()) {
+    if (grid.is_hole(f)) grid.set_attribute_value(ElementKind::face, "mark", f.index(), true);
+  }
+  const Mesh out = test::apply_and_check(grid, "hexagonalize", {}, {.v = 32, .e = 44, .f = 12}).mesh;
+  for (FaceId f : out.faces()) {
+    CHECK(std::get<bool>(out.attribute_value(ElementKind::face, "mark", f.index())) == out.is_hole(f));
+  }
+}
+
 TEST_CASE("hexagonalize: refusals leave the mesh unchanged") {
   const Mesh cube = test::cube();
   CHECK(test::refused_parameter(cube, "hexagonalize", {{"angle", -1.0}}) == "angle");

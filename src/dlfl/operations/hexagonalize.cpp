@@ -3,6 +3,7 @@
 
 #include <dlfl/operations/hexagonalize.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
@@ -13,7 +14,7 @@
 #include <dlfl/build_mesh.h>
 #include <dlfl/format.h>
 #include <dlfl/geometry.h>
-#include <dlfl/operations/detail/convex_hull_3d.h>
+#include <dlfl/operations/detail/carry_attributes.h>
 #include <dlfl/operations/detail/operation_table.h>
 #include <dlfl/operations/detail/refusal.h>
 
@@ -44,27 +45,81 @@ class Builder {
     add_edge_points();
     add_hubs();
     for (VertexId v : m_.vertices()) {
-      if (m_.is_point_sphere(v)) soup_.positions.push_back(m_.position(v));
+      if (m_.is_point_sphere(v)) add_point(m_.position(v), origin_of(v));
     }
   }
 
-  Mesh build() {
+  Mesh build(Origins& origins, std::vector<Origin>& corners) {
     for (FaceId f : m_.faces()) {
       if (m_.is_hole(f) || m_.size(f) < 2) continue;
       face_.clear();
-      for (CornerId c : m_.corners(f)) face_.push_back(point_[c.index()]);
-      soup_.add_face(face_);
+      // The side from the point of c to that of next(c) cuts off next(c), as in the honeycomb.
+      for (CornerId c : m_.corners(f)) push(point_[c.index()], origin_of(c), origin_of(m_.next(c)));
+      add_face(origin_of(f));
     }
     for (VertexId v : m_.vertices()) {
       if (!m_.is_point_sphere(v)) add_vertex_faces(v);
     }
-    return build_mesh(soup_);
+    Mesh out = build_mesh(soup_);
+    set_origins(out, origins, corners);
+    return out;
   }
 
  private:
-  std::uint32_t add_point(const glm::dvec3& p) {
+  // A corner of the face being built: its point, the corner it stands for, and the origin of its side (the
+  // edge to the next point).
+  struct Entry {
+    std::uint32_t point;
+    Origin corner, side;
+  };
+
+  std::uint32_t add_point(const glm::dvec3& p, Origin origin) {
     soup_.positions.push_back(p);
+    vertex_origin_.push_back(origin);
     return std::uint32_t(soup_.positions.size() - 1);
+  }
+
+  void push(std::uint32_t point, Origin corner, Origin side) { face_.push_back({point, corner, side}); }
+
+  void add_face(Origin origin) {
+    points_.clear();
+    for (const Entry& entry : face_) {
+      points_.push_back(entry.point);
+      corner_origin_.push_back(entry.corner);
+      side_origin_.push_back(entry.side);
+    }
+    soup_.add_face(points_);
+    face_origin_.push_back(origin);
+  }
+
+  // Handles of `out` follow the soup (build_mesh.h): vertex i, face i, the j-th corner of face i at
+  // offsets[i]
+  // + j. The holes and point spheres build_mesh adds are found from their neighbours.
+  void set_origins(const Mesh& out, Origins& origins, std::vector<Origin>& corners) const {
+    origins.vertices.assign(out.vertex_capacity(), Origin{});
+    origins.edges.assign(out.edge_capacity(), Origin{});
+    origins.faces.assign(out.face_capacity(), Origin{});
+    corners.assign(out.corner_capacity(), Origin{});
+    std::copy(vertex_origin_.begin(), vertex_origin_.end(), origins.vertices.begin());
+    std::copy(face_origin_.begin(), face_origin_.end(), origins.faces.begin());
+    std::copy(corner_origin_.begin(), corner_origin_.end(), corners.begin());
+    for (std::uint32_t k = 0; k < side_origin_.size(); ++k) {
+      origins.edges[out.edge(CornerId(k)).index()] = side_origin_[k];
+    }
+    for (FaceId h : out.faces()) {
+      if (!out.is_hole(h)) continue;
+      // Across the hole's first corner lies a surface corner whose side halves an input border edge.
+      const CornerId across = out.opposite(out.first_corner(h));
+      const EdgeId e = side_origin_[across.index()].edge();
+      origins.faces[h.index()] = origin_of(m_.is_hole(m_.face(e, 0)) ? m_.face(e, 0) : m_.face(e, 1));
+    }
+    for (VertexId v : out.vertices()) {
+      if (!out.is_point_sphere(v)) continue;
+      const VertexId source = origins.vertices[v.index()].vertex();
+      const CornerId c = out.corner(v), input = m_.corner(source);
+      origins.faces[out.face(c).index()] = origin_of(m_.face(input));
+      corners[c.index()] = origin_of(input);
+    }
   }
 
   bool on_border(EdgeId e) const { return m_.is_hole(m_.face(e, 0)) || m_.is_hole(m_.face(e, 1)); }
@@ -93,7 +148,7 @@ class Builder {
       const glm::dvec3 centroid = face_centroid(m_, f);
       for (CornerId c : m_.corners(f)) {
         const glm::dvec3 mid = 0.5 * (m_.position(m_.vertex(c)) + m_.position(m_.vertex(m_.next(c))));
-        point_[c.index()] = add_point(mid + face_pull * (centroid - mid));
+        point_[c.index()] = add_point(mid + face_pull * (centroid - mid), origin_of(c));
       }
     }
   }
@@ -109,10 +164,10 @@ class Builder {
       std::uint32_t* at = &end_point_[2 * std::size_t(e.index())];
       const bool cut0 = is_cut(ends[0]), cut1 = is_cut(ends[1]);
       if (cut0 && cut1 && !on_border(e)) {
-        at[0] = add_point(p0 + end_share * (p1 - p0));
-        at[1] = add_point(p1 + end_share * (p0 - p1));
+        at[0] = add_point(p0 + end_share * (p1 - p0), origin_of(e));
+        at[1] = add_point(p1 + end_share * (p0 - p1), origin_of(e));
       } else if (cut0 || cut1) {
-        at[0] = at[1] = add_point(0.5 * (p0 + p1));
+        at[0] = at[1] = add_point(0.5 * (p0 + p1), origin_of(e));
       }
     }
   }
@@ -135,13 +190,16 @@ class Builder {
   void add_hubs() {
     hub_.assign(m_.vertex_capacity(), none);
     for (VertexId v : m_.vertices()) {
-      if (is_cut(v) && needs_hub(v)) hub_[v.index()] = add_point(m_.position(v));
+      if (is_cut(v) && needs_hub(v)) hub_[v.index()] = add_point(m_.position(v), origin_of(v));
     }
   }
 
   // The face of v (the honeycomb's face around an old vertex), cut at its sharp edges if v is cut. Around
   // v, from corner c to the corner across edge(prev(c)): the points of c and prev(c), then the crossing of
-  // edge(prev(c)), which carries the points of its far end and of v when it is sharp.
+  // edge(prev(c)), which carries the points of its far end and of v when it is sharp. Origins: the face <- v;
+  // the corners at the points of c and prev(c) <- c (v's corner in their face); the side between them <- c
+  // (as in the shrunken copy), the sides of the crossing of an edge and those along it <- that edge, the side
+  // across v of an in-line cut <- v.
   void add_vertex_faces(VertexId v) {
     ring_.clear();
     for (CornerId c = m_.corner(v);;) {
@@ -160,30 +218,38 @@ class Builder {
     if (!cut) start = n - 1;
     face_.clear();
     bool dropped = false;
-    if (cut) face_.push_back(own_point(ring_[start]));
+    // The sharp edge that the piece being built starts on.
+    Origin piece_edge = origin_of(m_.edge(m_.prev(ring_[start])));
+    if (cut) push(own_point(ring_[start]), Origin{}, piece_edge);
     for (std::size_t i = 1; i <= n; ++i) {
       const std::size_t j = (start + i) % n;
       const CornerId c = ring_[j], before = m_.prev(c);
+      const EdgeId e = m_.edge(before);
       if (m_.is_hole(m_.face(c))) {
         dropped = true;
       } else {
-        face_.push_back(point_[c.index()]);
-        face_.push_back(point_[before.index()]);
+        push(point_[c.index()], origin_of(c), origin_of(c));
+        push(point_[before.index()], origin_of(c), origin_of(e));
       }
-      const EdgeId e = m_.edge(before);
       if (!sharp_[e.index()]) continue;
       const std::uint32_t far = end_point_[2 * std::size_t(e.index()) + side_of(m_, before)];
       const std::uint32_t own = end_point_[2 * std::size_t(e.index()) + 1 - side_of(m_, before)];
       // Two points (far end first), one (the midpoint, far == own) or none.
-      if (far != none) face_.push_back(far);
-      if (own != far) face_.push_back(own);
+      if (far != none) push(far, Origin{}, origin_of(e));
+      if (own != far) push(own, Origin{}, origin_of(e));
       if (!crossing_is_cut(j)) continue;
-      if (hub_[v.index()] != none) face_.push_back(hub_[v.index()]);
-      if (!dropped) soup_.add_face(face_);
-      face_.assign(1, own);
+      if (hub_[v.index()] != none) {
+        push(hub_[v.index()], Origin{}, piece_edge);
+      } else {
+        face_.back().side = origin_of(v);
+      }
+      if (!dropped) add_face(origin_of(v));
+      face_.clear();
+      piece_edge = origin_of(e);
+      push(own, Origin{}, piece_edge);
       dropped = false;
     }
-    if (!cut) soup_.add_face(face_);
+    if (!cut) add_face(origin_of(v));
   }
 
   // The point of v's cut on the sharp edge crossed after corner c (edge(prev(c)) turned around v).
@@ -194,10 +260,13 @@ class Builder {
 
   const Mesh& m_;
   PolygonSoup soup_;
+  // The origins of the soup's vertices, faces and corners, and of the side leaving each corner.
+  std::vector<Origin> vertex_origin_, face_origin_, corner_origin_, side_origin_;
+  std::vector<Entry> face_;
+  std::vector<std::uint32_t> points_;
   std::vector<bool> sharp_;
   std::vector<std::uint32_t> sharp_count_, point_, end_point_, hub_;
   std::vector<CornerId> ring_;
-  std::vector<std::uint32_t> face_;
 };
 
 }  // namespace
@@ -220,10 +289,12 @@ void check_hexagonalize(const Mesh& mesh, const HexagonalizeOptions& o) {
   }
 }
 
-Mesh hexagonalize(const Mesh& mesh, const HexagonalizeOptions& options) {
+Mesh hexagonalize(const Mesh& mesh, const HexagonalizeOptions& options, Origins* origins) {
   check_hexagonalize(mesh, options);
-  Mesh out = Builder(mesh, options.angle).build();
-  detail::declare_attributes(mesh, out);
+  Origins own;
+  std::vector<Origin> corners;
+  Mesh out = Builder(mesh, options.angle).build(origins ? *origins : own, corners);
+  detail::carry_attributes(mesh, origins ? *origins : own, corners, out);
   return out;
 }
 

@@ -32,9 +32,17 @@
 //   V' = 2E + C + H,   E' = 3E - B + C + L + (sum of k_v over the hubs),
 //   F' = F + V + (sum of k_v - 1 over the cut vertices) - (the border's vertices) + holes,
 // the holes being as many as before (a border of N edges becomes one of 2N). Point spheres are kept as they
-// are. Topology and orientation are kept; named attributes are declared on the result, with their defaults.
+// are. Topology and orientation are kept.
+//
+// Named attributes are declared on the result and carried where an element of the result stands for an
+// input element of the same kind (see `hexagonalize`'s origins): a face's shrunken copy keeps the face's
+// values, a hole its hole's, a hub its vertex's, a point sphere its own; the edges crossing or lying along an
+// input edge keep that edge's values; the corners at the point of corner c (in f's shrunken copy and in the
+// face of c's vertex) keep c's. Everything else (the points of the corners and of the sharp edges, the faces
+// of the vertices) reads the default.
 
 #include <dlfl/mesh.h>
+#include <dlfl/schemes/origins.h>
 
 namespace dlfl {
 
@@ -54,6 +62,12 @@ void check_hexagonalize(const Mesh& mesh, const HexagonalizeOptions& options = {
 /// (edge handle order, the edge's side-0 end first), then the hubs (vertex handle order), then the point
 /// spheres; faces: the shrunken copies in face handle order, then the faces and pieces of each vertex in
 /// vertex handle order, then the holes. O(size).
-Mesh hexagonalize(const Mesh& mesh, const HexagonalizeOptions& options = {});
+///
+/// Origins (filled when `origins` is given; handles of `mesh`): the point of corner c <- c, a point on a
+/// sharp edge <- that edge, a hub <- its vertex; a shrunken copy <- its face, the face or a piece of vertex v
+/// <- v, a hole <- its hole; the side of a shrunken copy from the point of c to that of next(c) <- next(c),
+/// the edges crossing input edge e and the edges along it <- e, the edge across an in-line cut vertex <- that
+/// vertex; a point sphere's vertex <- its vertex, its face <- its face.
+Mesh hexagonalize(const Mesh& mesh, const HexagonalizeOptions& options = {}, Origins* origins = nullptr);
 
 }  // namespace dlfl
