@@ -18,6 +18,7 @@
 #include <dlfl/geometry.h>
 #include <dlfl/mesh_hash.h>
 #include <dlfl/operations/hexagonalize.h>
+#include <dlfl/render/colors.h>
 #include <dlfl/schemes/honeycomb.h>
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
 #include <dlfl/validate.h>
@@ -220,6 +221,34 @@ TEST_CASE("mesh_info_json: the shape fields for closed meshes only") {
   CHECK(mesh_info_json(build_mesh(l_prism_soup()), {.indent = -1}).find("concave") == std::string::npos);
   CHECK(mesh_info_json(build_mesh(test::grid_soup(2, 2)), {.shape = true}).find("concave") ==
         std::string::npos);
+}
+
+TEST_CASE("concave_edges flags the edge, and render's concave colouring its two faces") {
+  // The L-shaped prism: the vertical edge at the reflex corner (1, 1) is the only concave edge; its faces
+  // are the two side quads that meet there.
+  const Mesh l_prism = build_mesh(l_prism_soup());
+  std::vector<bool> flags;
+  concave_edges(l_prism, 1e-9, &flags);
+  REQUIRE(flags.size() == l_prism.edge_capacity());
+  std::vector<EdgeId> flagged;
+  for (EdgeId e : l_prism.edges()) {
+    if (flags[e.index()]) flagged.push_back(e);
+  }
+  REQUIRE(flagged.size() == 1);
+  const glm::dvec3 a = l_prism.position(l_prism.from(flagged[0])),
+                   b = l_prism.position(l_prism.to(flagged[0]));
+  CHECK(a.x == 1.0);
+  CHECK(a.y == 1.0);
+  CHECK(b.x == 1.0);
+  CHECK(b.y == 1.0);
+  const std::vector<Rgba> colors = face_colors(l_prism, parse_color_by("concave"));
+  for (FaceId f : l_prism.faces()) {
+    const bool beside = f == l_prism.face(flagged[0], 0) || f == l_prism.face(flagged[0], 1);
+    CHECK(colors[f.index()] == (beside ? concave_color : plain_color));
+  }
+  // A convex shape has no red face.
+  const Mesh prism = build_mesh(test::prism_rows_soup(6, 3));
+  for (const Rgba& c : face_colors(prism, parse_color_by("concave"))) CHECK(c == plain_color);
 }
 
 namespace {

@@ -23,7 +23,7 @@ double angle_between(const glm::dvec3& a, const glm::dvec3& b) {
 
 }  // namespace
 
-ConcaveEdges concave_edges(const Mesh& mesh, double relative_tolerance) {
+ConcaveEdges concave_edges(const Mesh& mesh, double relative_tolerance, std::vector<bool>* concave) {
   if (!(relative_tolerance >= 0.0 && std::isfinite(relative_tolerance))) {
     throw InvalidArgument("concave_edges: relative_tolerance = " + format_number(relative_tolerance) +
                           " must be finite and >= 0");
@@ -38,6 +38,7 @@ ConcaveEdges concave_edges(const Mesh& mesh, double relative_tolerance) {
     centroids[f.index()] = face_centroid(mesh, f);
   }
   constexpr double degrees = 180.0 / std::numbers::pi;
+  if (concave) concave->assign(mesh.edge_capacity(), false);
   ConcaveEdges out;
   double bend_sum = 0.0;
   for (EdgeId e : mesh.edges()) {
@@ -51,6 +52,7 @@ ConcaveEdges concave_edges(const Mesh& mesh, double relative_tolerance) {
     bend_sum += bend;
     if (pf.distance(centroids[g.index()]) > tolerance || pg.distance(centroids[f.index()]) > tolerance) {
       ++out.concave;
+      if (concave) (*concave)[e.index()] = true;
       out.worst_concave_degrees = std::max(out.worst_concave_degrees, bend);
     }
   }

@@ -3,6 +3,7 @@
 // edges of a surface that should be convex, and how smooth it is. See docs/lateral_artifacts.md.
 
 #include <cstddef>
+#include <vector>
 
 #include <dlfl/mesh.h>
 
@@ -26,7 +27,9 @@ struct ConcaveEdges {
 /// Measures every edge of the mesh as above. The tolerance is `relative_tolerance` times the diagonal of the
 /// bounding box of the live vertices, so the count does not depend on the mesh's scale. Meant for closed,
 /// consistently oriented surfaces (edges beside a hole are skipped, so an open mesh gets its interior
-/// measured). Throws InvalidArgument unless relative_tolerance is finite and >= 0. O(size).
-ConcaveEdges concave_edges(const Mesh& mesh, double relative_tolerance = 1e-9);
+/// measured). When `concave` is given it is set to one flag per edge handle (edge_capacity() entries), true
+/// for the concave edges. Throws InvalidArgument unless relative_tolerance is finite and >= 0. O(size).
+ConcaveEdges concave_edges(const Mesh& mesh, double relative_tolerance = 1e-9,
+                           std::vector<bool>* concave = nullptr);
 
 }  // namespace dlfl
