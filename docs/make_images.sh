@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Regenerates the README's pictures in docs/images/ with the dlfl tool (build it first:
+# Regenerates the pictures of the README and the docs in docs/images/ with the dlfl tool (build it first:
 # cmake --build build -j2 --target dlfl_tool). Usage: docs/make_images.sh [path/to/dlfl]
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -59,5 +59,23 @@ CELL_TYPES 3
 12
 VTK
 "$dlfl" render "$scratch/l_block.vtk" -s mlca -n 2 --size 260x260 -o "$out/l_block_mlca.png"
+
+# The lateral artifacts (docs/lateral_artifacts.md): the hexagonal prism of radius 1 and height 3 with 3 rows
+# of quads per side (y up), after 4 honeycomb steps, plain, with planarize=1, and after hexagonalize; the
+# faces beside a concave edge in red (--color-by concave).
+awk 'BEGIN { n = 6; rows = 3; pi = atan2(0, -1)
+  for (z = 0; z <= rows; ++z) for (i = 0; i < n; ++i) printf "v %.17g %.17g %.17g\n", sin(2*pi*i/n), 3*z/rows, cos(2*pi*i/n)
+  printf "f"; for (i = n; i >= 1; --i) printf " %d", i; printf "\n"
+  printf "f"; for (i = 1; i <= n; ++i) printf " %d", rows*n + i; printf "\n"
+  for (z = 0; z < rows; ++z) for (i = 0; i < n; ++i)
+    printf "f %d %d %d %d\n", z*n + i + 1, z*n + (i+1)%n + 1, (z+1)*n + (i+1)%n + 1, (z+1)*n + i + 1 }' > "$scratch/prism.obj"
+"$dlfl" edit "$scratch/prism.obj" -o "$scratch/prism_hex.json" --op hexagonalize
+lateral=(--size 240x300 --azimuth 15 --elevation 10 --color-by concave)
+"$dlfl" subdivide "$scratch/prism.obj" -s honeycomb -n 4 -o "$scratch/plain.json"
+"$dlfl" render "$scratch/plain.json" "${lateral[@]}" -o "$out/lateral_plain.png"
+"$dlfl" subdivide "$scratch/prism.obj" -s honeycomb -n 4 --param planarize=1 -o "$scratch/planarized.json"
+"$dlfl" render "$scratch/planarized.json" "${lateral[@]}" -o "$out/lateral_planarize.png"
+"$dlfl" subdivide "$scratch/prism_hex.json" -s honeycomb -n 4 -o "$scratch/hexagonalized.json"
+"$dlfl" render "$scratch/hexagonalized.json" "${lateral[@]}" -o "$out/lateral_hexagonalize.png"
 
 ls -l "$out"

@@ -98,7 +98,12 @@ TEST_CASE("scheme registry: the declared types") {
   }
   CHECK(type_of("mhp", "pattern") == ParamType::text);
   const Params h = resolve_scheme_params("honeycomb", {});
-  CHECK(h == Params{{"t", 0.5}, {"a0", 0.45}, {"a1", 1.25}, {"boundary", "curve"}, {"sharp_corners", true}});
+  CHECK(h == Params{{"t", 0.5},
+                    {"a0", 0.45},
+                    {"a1", 1.25},
+                    {"boundary", "curve"},
+                    {"sharp_corners", true},
+                    {"planarize", std::int64_t{0}}});
   const Params m = resolve_scheme_params("mhp", {{"center", "1,2,3"}, {"random", "true"}, {"seed", "9"}});
   CHECK(m.point("center") == glm::dvec3(1, 2, 3));
   CHECK(m.boolean("random"));
@@ -146,8 +151,10 @@ TEST_CASE("scheme registry: ranges that need no mesh are refused when resolving,
 TEST_CASE("scheme registry: a constant tension excludes a0 and a1, and the resolved set drops them") {
   for (const char* scheme : {"honeycomb", "dual-honeycomb-dual"}) {
     CAPTURE(scheme);
-    CHECK(resolve_scheme_params(scheme, {{"a", 0.6}}) ==
-          Params{{"t", 0.5}, {"a", 0.6}, {"boundary", "curve"}, {"sharp_corners", true}});
+    Params expected{{"t", 0.5}, {"a", 0.6}, {"boundary", "curve"}, {"sharp_corners", true}};
+    if (std::string(scheme) == "honeycomb")
+      expected["planarize"] = std::int64_t{0};  // dual-honeycomb-dual has none
+    CHECK(resolve_scheme_params(scheme, {{"a", 0.6}}) == expected);
     const auto [message, parameter] = parameter_error([&] {
       resolve_scheme_params(scheme, {{"a", 0.6}, {"a1", 1.0}});
     });

@@ -133,9 +133,12 @@ TEST_CASE("tool: subdivide writes the honeycomb and a log that replays to the sa
   // The log records every parameter, defaults included.
   std::ifstream in(log);
   auto doc = nlohmann::json::parse(in);
-  CHECK(doc["ops"][1]["params"] ==
-        nlohmann::json(
-            {{"t", 0.5}, {"a0", 0.45}, {"a1", 1.25}, {"boundary", "curve"}, {"sharp_corners", true}}));
+  CHECK(doc["ops"][1]["params"] == nlohmann::json({{"t", 0.5},
+                                                   {"a0", 0.45},
+                                                   {"a1", 1.25},
+                                                   {"boundary", "curve"},
+                                                   {"sharp_corners", true},
+                                                   {"planarize", 0}}));
 }
 
 TEST_CASE(

@@ -187,10 +187,10 @@ Action add_render(CLI::App& app) {
       ->excludes(fit);
   a->edges_option =
       cmd->add_flag("--edges,!--no-edges", a->edges, "Draw the edges (default: on below 200000 faces)");
-  cmd->add_option(
-      "--color-by", a->color_by,
-      "none, face-size (default), component, hole, or attribute=NAME (a number or boolean on faces "
-      "or vertices)");
+  cmd->add_option("--color-by", a->color_by,
+                  "none, face-size (default), component, hole, concave (faces beside a concave edge), or "
+                  "attribute=NAME (a number or boolean on faces "
+                  "or vertices)");
   cmd->add_option("--background", a->background,
                   "Background colour: #RRGGBB or white, black, gray (default white)");
   cmd->add_flag("--transparent", a->transparent, "Transparent background");

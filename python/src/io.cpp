@@ -95,12 +95,13 @@ views.)doc");
       py::arg("complex"), py::arg("path"), py::arg("ascii") = false);
   m.def(
       "info",
-      [](const ComplexRef& complex, bool angles) {
+      [](const ComplexRef& complex, bool angles, bool shape) {
         if (angles) throw InvalidArgument("info: angles measure polyhedra; a cell complex has none");
+        if (shape) throw InvalidArgument("info: the shape measures surfaces; a cell complex has none");
         return from_json(cell_complex_info_json(*complex.complex, -1));
       },
       "What `dlfl info` prints for a cell complex, as a dict: vertices, cells, cells_by_dimension, bbox.",
-      py::arg("complex"), py::arg("angles") = false);
+      py::arg("complex"), py::arg("angles") = false, py::arg("shape") = false);
 }
 
 }  // namespace

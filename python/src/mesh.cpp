@@ -547,14 +547,16 @@ sphere. Raises PolygonError (element, index) for a face or vertex that is not a 
       py::arg("mesh"), py::arg("max_violations") = 100);
   m.def(
       "info",
-      [](const MeshRef& mesh, bool angles) {
-        return from_json(mesh.read_without_gil(
-            [&](const Mesh& x) { return mesh_info_json(x, {.angles = angles, .indent = -1}); }));
+      [](const MeshRef& mesh, bool angles, bool shape) {
+        return from_json(mesh.read_without_gil([&](const Mesh& x) {
+          return mesh_info_json(x, {.angles = angles, .shape = shape, .indent = -1});
+        }));
       },
       R"doc(What `dlfl info` prints, as a dict: counts of the open surface (vertices, edges, faces, corners, holes,
 point_spheres), components, euler_characteristic, genus (a list, per component), valid, face_sizes and
-valences (histograms keyed by strings), bbox, hash; with angles=True also 'angles' (degrees) and convexity.)doc",
-      py::arg("mesh"), py::arg("angles") = false);
+valences (histograms keyed by strings), bbox, hash; with angles=True also 'angles' (degrees) and convexity;
+with shape=True, for a closed mesh, 'concave_edges' and 'worst_concave_degrees' (docs/lateral_artifacts.md).)doc",
+      py::arg("mesh"), py::arg("angles") = false, py::arg("shape") = false);
 }
 
 }  // namespace dlfl::python

@@ -36,3 +36,17 @@ def grid_arrays(n, m):
 
 CUBE_POSITIONS = [[-1, -1, -1], [1, -1, -1], [-1, 1, -1], [1, 1, -1], [-1, -1, 1], [1, -1, 1], [-1, 1, 1], [1, 1, 1]]
 CUBE_FACES = [[0, 2, 3, 1], [4, 5, 7, 6], [0, 1, 5, 4], [2, 6, 7, 3], [0, 4, 6, 2], [1, 3, 7, 5]]
+
+
+def prism_rows_arrays(n, rows, height=3.0):
+    """The n-gonal prism of radius 1 and the given height with each side split into `rows` quads (a convex
+    shape with flat sides, docs/lateral_artifacts.md): V = n (rows + 1), E = n (2 rows + 1), F = n rows + 2."""
+    a = 2 * np.pi * np.arange(n) / n
+    positions = np.array([[np.cos(t), np.sin(t), height * z / rows] for z in range(rows + 1) for t in a])
+
+    def vid(z, i):
+        return z * n + i % n
+
+    faces = [[vid(0, i) for i in reversed(range(n))], [vid(rows, i) for i in range(n)]]
+    faces += [[vid(z, i), vid(z, i + 1), vid(z + 1, i + 1), vid(z + 1, i)] for z in range(rows) for i in range(n)]
+    return positions, faces

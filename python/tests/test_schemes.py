@@ -3,7 +3,7 @@ complexes."""
 
 import numpy as np
 import pytest
-from meshes import CUBE_FACES, CUBE_POSITIONS
+from meshes import CUBE_FACES, CUBE_POSITIONS, prism_rows_arrays
 
 import dlfl
 
@@ -134,3 +134,29 @@ def test_bad_cell_complexes_are_refused():
         dlfl.CellComplex.from_arrays([[0, 0, 0], [1, 0, 0]], [[0, 5]])
     with pytest.raises(dlfl.InvalidArgument):
         dlfl.info(square_curve(), angles=True)
+
+
+def test_the_lateral_fixes_planarize_and_hexagonalize():
+    # The hexagonal prism with 2 rows of quads per side is convex, so every concave edge is an artifact; the
+    # planarize rule of docs/lateral_artifacts.md removes them all, keeping the honeycomb's counts
+    # (V' = 2E, E' = 3E, F' = F + V: V 18, E 30, F 14 -> 60, 90, 32 -> 180, 270, 92).
+    prism = dlfl.Mesh.from_arrays(*prism_rows_arrays(6, 2))
+    assert counts(prism) == (18, 30, 14)
+    fixed = dlfl.subdivide(prism, "honeycomb", iterations=2, planarize=1)
+    assert counts(fixed) == (180, 270, 92)
+    assert dlfl.info(fixed, shape=True)["concave_edges"] == 0
+    assert "concave_edges" not in dlfl.info(fixed)
+    ed = dlfl.Editor(prism)
+    ed.subdivide("honeycomb", iterations=2, planarize=1)
+    assert ed.mesh == fixed and ed.log()["ops"][-1]["params"]["planarize"] == 1
+    # hexagonalize, a method of the editor like every registered operation: on the 6-gonal prism with 3 rows
+    # its closed form gives V 24 -> 156, E 42 -> 234, F 20 -> 80 (docs/modeling.md); undone, the prism again.
+    prism3 = dlfl.Mesh.from_arrays(*prism_rows_arrays(6, 3))
+    ed = dlfl.Editor(prism3)
+    ed.hexagonalize(angle=1.0)
+    assert counts(ed.mesh) == (156, 234, 80)
+    assert dlfl.info(ed.mesh, shape=True)["concave_edges"] == 0
+    ed.undo()
+    assert ed.mesh == prism3
+    with pytest.raises(dlfl.ParameterError):
+        ed.hexagonalize(angle=200.0)

@@ -178,10 +178,10 @@ int main(int argc, char** argv) {
   std::map<std::string, long> applied_by_op;
   for (long i = 0; i < ops_count; ++i) {
     const OperationSpec& op = *ops[session.pick(static_cast<std::uint32_t>(ops.size()))];
-    // Schemes, and the operations that grow the whole mesh (shells and frames, high genus), only on small
-    // meshes, so that the session stays quick; bigger meshes get undone instead.
-    static const std::set<std::string> whole_mesh_growth = {"subdivide", "crust",      "rind",  "wireframe",
-                                                            "columns",   "sierpinski", "menger"};
+    // Schemes, and the operations that grow the whole mesh (shells and frames, high genus, hexagonalize),
+    // only on small meshes, so that the session stays quick; bigger meshes get undone instead.
+    static const std::set<std::string> whole_mesh_growth = {
+        "subdivide", "crust", "rind", "wireframe", "columns", "sierpinski", "menger", "hexagonalize"};
     if (whole_mesh_growth.count(op.name) && editor.mesh().num_corners() > 2000) {
       try {
         (void)editor.undo();

@@ -18,18 +18,6 @@ std::string format_point(const glm::dvec3& p) {
   return s.append(format_number(p.z)).append(")");
 }
 
-double diagonal(const Mesh& mesh) {
-  glm::dvec3 lo(0.0), hi(0.0);
-  bool first = true;
-  for (VertexId v : mesh.vertices()) {
-    const glm::dvec3& p = mesh.position(v);
-    lo = first ? p : glm::min(lo, p);
-    hi = first ? p : glm::max(hi, p);
-    first = false;
-  }
-  return glm::length(hi - lo);
-}
-
 // Solid angle of the triangle (a, b, c) seen from the origin (Van Oosterom and Strackee); positive when the
 // triangle is counter-clockwise seen from the origin's outside, i.e. oriented away from it.
 double solid_angle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
@@ -62,6 +50,18 @@ FacePlane face_plane(const Mesh& mesh, FaceId f) {
   return plane;
 }
 
+double bounding_box_diagonal(const Mesh& mesh) {
+  glm::dvec3 lo(0.0), hi(0.0);
+  bool first = true;
+  for (VertexId v : mesh.vertices()) {
+    const glm::dvec3& p = mesh.position(v);
+    lo = first ? p : glm::min(lo, p);
+    hi = first ? p : glm::max(hi, p);
+    first = false;
+  }
+  return glm::length(hi - lo);
+}
+
 glm::dvec3 vertex_centroid(const Mesh& mesh) {
   glm::dvec3 sum(0.0);
   for (VertexId v : mesh.vertices()) sum += mesh.position(v);
@@ -81,7 +81,7 @@ std::optional<ConvexityViolation> convexity_violation(const Mesh& mesh, const gl
       return topological(to_string(f) + " has 2 sides");
     }
   }
-  const double tolerance = options.relative_tolerance * diagonal(mesh);
+  const double tolerance = options.relative_tolerance * bounding_box_diagonal(mesh);
 
   // Planes, planarity, and strictly convex polygons.
   std::vector<FacePlane> planes(mesh.face_capacity());

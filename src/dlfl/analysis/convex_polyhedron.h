@@ -25,6 +25,10 @@ struct FacePlane {
 /// The plane of a face, as above. A degenerate face (zero area) gets a zero normal.
 FacePlane face_plane(const Mesh& mesh, FaceId f);
 
+/// The length of the diagonal of the bounding box of the live vertices (0 for an empty mesh): the mesh size
+/// that relative tolerances scale with. O(vertices).
+double bounding_box_diagonal(const Mesh& mesh);
+
 /// The centroid of the live vertices: the default centre of the Meng-Prautzsch schemes. (0,0,0) for an empty
 /// mesh.
 glm::dvec3 vertex_centroid(const Mesh& mesh);

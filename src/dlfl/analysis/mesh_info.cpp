@@ -2,6 +2,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <dlfl/analysis/concave_edges.h>
 #include <dlfl/analysis/convex_polyhedron.h>
 #include <dlfl/analysis/polyhedron_angles.h>
 #include <dlfl/mesh_hash.h>
@@ -66,6 +67,11 @@ nlohmann::ordered_json describe_angles(const Mesh& mesh) {
 std::string mesh_info_json(const Mesh& mesh, const MeshInfoOptions& options) {
   nlohmann::ordered_json j = describe(mesh);
   if (options.angles) j["angles"] = describe_angles(mesh);
+  if (options.shape && j["holes"] == 0) {
+    const ConcaveEdges c = concave_edges(mesh);
+    j["concave_edges"] = c.concave;
+    j["worst_concave_degrees"] = c.worst_concave_degrees;
+  }
   return j.dump(options.indent);
 }
 

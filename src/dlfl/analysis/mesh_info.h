@@ -14,6 +14,9 @@ struct MeshInfoOptions {
   /// whether the mesh is a strictly convex polyhedron around its vertex centroid ("convex", and
   /// "not_convex_because" when it is not).
   bool angles = false;
+  /// Add, for a closed mesh (no hole), "concave_edges" and "worst_concave_degrees" (see `concave_edges`, the
+  /// lateral-artifact measure of docs/lateral_artifacts.md).
+  bool shape = false;
   /// As nlohmann::json::dump takes it: -1 for one line, else the spaces per level.
   int indent = 2;
 };
@@ -21,7 +24,8 @@ struct MeshInfoOptions {
 /// A JSON object, keys in this order: "vertices", "edges", "faces", "corners", "holes", "point_spheres" (the
 /// open surface's counts, see `statistics`), "components", "euler_characteristic" (V - E + F of the open
 /// surface), "genus" (one per component, see `validate`), "valid", "face_sizes" and "valences" (histograms,
-/// keys as strings), "bbox" ([[min], [max]]), "hash" (`mesh_hash`), and "angles" when asked for. O(size)
+/// keys as strings), "bbox" ([[min], [max]]), "hash" (`mesh_hash`), "angles" when asked for, and
+/// "concave_edges" and "worst_concave_degrees" when the shape is asked for and the mesh is closed. O(size)
 /// (with angles, as `polyhedron_angles`).
 std::string mesh_info_json(const Mesh& mesh, const MeshInfoOptions& options = {});
 

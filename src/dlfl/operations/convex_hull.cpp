@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include <dlfl/operations/detail/carry_attributes.h>
 #include <dlfl/operations/detail/convex_hull_3d.h>
 #include <dlfl/operations/detail/operation_table.h>
 
@@ -20,15 +21,11 @@ Mesh convex_hull(std::span<const glm::dvec3> points) {
 
 Mesh convex_hull(const Mesh& mesh) {
   detail::HullMesh hull = detail::hull_of_mesh(mesh, op_name);
-  detail::declare_attributes(mesh, hull.mesh);
-  for (const AttributeInfo& a : mesh.attributes()) {
-    if (a.kind != ElementKind::vertex) continue;
-    for (std::uint32_t i = 0; i < hull.source.size(); ++i) {
-      const AttributeValue value = mesh.attribute_value(a.kind, a.name, hull.source[i]);
-      if (!same_attribute_value(value, a.default_value))
-        hull.mesh.set_attribute_value(a.kind, a.name, i, value);
-    }
-  }
+  // Each vertex of the hull keeps the values of the input vertex it is.
+  Origins origins;
+  origins.vertices.reserve(hull.source.size());
+  for (std::uint32_t source : hull.source) origins.vertices.push_back(origin_of(VertexId(source)));
+  detail::carry_attributes(mesh, origins, {}, hull.mesh);
   return std::move(hull.mesh);
 }
 

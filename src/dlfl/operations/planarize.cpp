@@ -8,41 +8,20 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/analysis/detail/best_fit_plane.h>
+#include <dlfl/analysis/detail/planarize_moves.h>
 #include <dlfl/navigation.h>
-#include <dlfl/operations/detail/best_fit_plane.h>
 #include <dlfl/operations/detail/operation_table.h>
 #include <dlfl/operations/detail/refusal.h>
 
 namespace dlfl {
 namespace {
 
-// Below this a face counts as planar (relative to its mean edge length): rounding leaves about 1e-16.
-constexpr double planar_tolerance = 1e-12;
-
 bool counts(const Mesh& m, FaceId f) { return !m.is_hole(f) && m.size(f) >= 4; }
-
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 // One round; true if a vertex moved.
 bool planarize_round(Transaction& tx) {
-  const Mesh& m = tx.mesh();
-  std::vector<glm::dvec3> shift(m.vertex_capacity(), glm::dvec3(0.0));
-  std::vector<std::uint32_t> planes(m.vertex_capacity(), 0);
-  for (FaceId f : surface_faces(m)) {
-    if (!counts(m, f)) continue;
-    const detail::Plane plane = detail::best_fit_plane(m, f);
-    const bool planar = detail::face_nonplanarity(m, f, plane) <= planar_tolerance;
-    for (VertexId v : vertices(m, f)) {
-      ++planes[v.index()];
-      if (!planar) shift[v.index()] -= plane.normal * glm::dot(plane.normal, m.position(v) - plane.point);
-    }
-  }
-  std::vector<std::pair<VertexId, glm::dvec3>> moves;
-  for (VertexId v : m.vertices()) {
-    if (planes[v.index()] == 0 || shift[v.index()] == glm::dvec3(0.0)) continue;
-    const glm::dvec3 to = m.position(v) + shift[v.index()] / double(planes[v.index()]);
-    if (finite(to) && to != m.position(v)) moves.emplace_back(v, to);
-  }
+  const std::vector<std::pair<VertexId, glm::dvec3>> moves = detail::planarize_moves(tx.mesh());
   for (const auto& [v, to] : moves) tx.set_position(v, to);
   return !moves.empty();
 }

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 
+#include <dlfl/analysis/concave_edges.h>
 #include <dlfl/errors.h>
 
 namespace dlfl {
@@ -125,12 +126,14 @@ ColorBy parse_color_by(std::string_view text) {
   if (text == "face-size") return {ColorBy::Mode::face_size, {}};
   if (text == "component") return {ColorBy::Mode::component, {}};
   if (text == "hole") return {ColorBy::Mode::hole, {}};
+  if (text == "concave") return {ColorBy::Mode::concave, {}};
   if (text.starts_with("attribute=") && text.size() > 10) {
     return {ColorBy::Mode::attribute, std::string(text.substr(10))};
   }
-  throw ParameterError("color_by: expected none, face-size, component, hole or attribute=NAME, got '" +
-                           std::string(text) + "'",
-                       "color_by");
+  throw ParameterError(
+      "color_by: expected none, face-size, component, hole, concave or attribute=NAME, got '" +
+          std::string(text) + "'",
+      "color_by");
 }
 
 Rgba face_size_color(std::size_t size) {
@@ -178,6 +181,16 @@ std::vector<Rgba> face_colors(const Mesh& mesh, const ColorBy& color_by) {
       return hole_colors(mesh);
     case ColorBy::Mode::attribute:
       return attribute_colors(mesh, color_by.attribute);
+    case ColorBy::Mode::concave: {
+      std::vector<Rgba> colors(mesh.face_capacity(), plain_color);
+      std::vector<bool> concave;
+      concave_edges(mesh, 1e-9, &concave);
+      for (EdgeId e : mesh.edges()) {
+        if (!concave[e.index()]) continue;
+        colors[mesh.face(e, 0).index()] = colors[mesh.face(e, 1).index()] = concave_color;
+      }
+      return colors;
+    }
     case ColorBy::Mode::face_size: {
       std::vector<Rgba> colors(mesh.face_capacity(), plain_color);
       for (FaceId f : mesh.faces()) colors[f.index()] = face_size_color(mesh.size(f));

@@ -13,6 +13,7 @@
 #include <dlfl/format.h>
 #include <dlfl/schemes/detail/boundary_params.h>
 #include <dlfl/schemes/detail/honeycomb_params.h>
+#include <dlfl/schemes/detail/honeycomb_planarize.h>
 #include <dlfl/schemes/detail/honeycomb_remesh.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
@@ -167,7 +168,9 @@ Mesh honeycomb(const Mesh& mesh, const HoneycombParams& p, Origins* origins) {
       new_points[n] = origin + (a * edge_points[n] + scale * rest);
     }
   };
-  return detail::honeycomb_remesh(mesh, face_points, false, p.boundary, "honeycomb", origins).mesh;
+  Mesh result = detail::honeycomb_remesh(mesh, face_points, false, p.boundary, "honeycomb", origins).mesh;
+  if (p.planarize && detail::lateral_rule_applies(mesh)) detail::planarize_new_faces(result);
+  return result;
 }
 
 namespace detail {
@@ -183,6 +186,15 @@ std::vector<ParamSpec> honeycomb_param_specs() {
       param("a0", ParamType::number, d.a0, "the tension a0 + a1/N of an N-sided face: its constant part"),
       param("a1", ParamType::number, d.a1, "the tension a0 + a1/N of an N-sided face: the part divided by N"),
   });
+}
+
+std::vector<ParamSpec> with_planarize_param(std::vector<ParamSpec> specs) {
+  specs.push_back(param("planarize", ParamType::integer, 0,
+                        "1: planarize the new faces of the step from a control mesh with a flat region when "
+                        "that bends no more than the plain step, against lateral artifacts "
+                        "(docs/lateral_artifacts.md); 0: the plain step")
+                      .in(0, 1));
+  return specs;
 }
 
 void check_honeycomb_param_set(const std::string& scheme, const Params& given, Params& resolved) {
@@ -203,6 +215,7 @@ HoneycombParams honeycomb_params_from(const Params& p) {
   if (p.has("a0")) h.a0 = p.number("a0");
   if (p.has("a1")) h.a1 = p.number("a1");
   h.boundary = boundary_options_from(p);
+  h.planarize = p.has("planarize") && p.integer("planarize") == 1;
   return h;
 }
 
@@ -210,7 +223,7 @@ SchemeSpec honeycomb_scheme() {
   return {
       "honeycomb",
       "Akleman-Srinivasan honeycomb: a shrunken copy of every face and a face around every old vertex",
-      honeycomb_param_specs(),
+      with_planarize_param(honeycomb_param_specs()),
       [](const Params& given, Params& resolved) { check_honeycomb_param_set("honeycomb", given, resolved); },
       [](const Mesh& m, const Params& p, Origins* origins) {
         return honeycomb(m, honeycomb_params_from(p), origins);

@@ -60,6 +60,12 @@ struct HoneycombParams {
   double a1 = 1.25;
   /// What the step does at the boundary loops of an open mesh (see above); the default is the boundary rule.
   BoundaryOptions boundary = {};
+  /// The lateral rule against the bricklayers' problem (docs/lateral_artifacts.md): when the input is a
+  /// control mesh (an inner vertex whose valence is not 3) with a flat region (two neighbouring faces in one
+  /// plane), the step's new faces are planarized (vertices moved, the counts, 3-valence and topology
+  /// unchanged; vertices on a hole stay), and kept only if that makes no more concave edges and no larger
+  /// mean dihedral angle than the plain step. Off by default: off, or otherwise, the plain step, bit for bit.
+  bool planarize = false;
 };
 
 /// Coefficient a_{n,m} of formula (2) for a face of N vertices with tension a: a if n = m, else

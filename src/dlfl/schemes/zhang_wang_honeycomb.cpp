@@ -6,9 +6,12 @@
 #include <string>
 #include <vector>
 
+#include <dlfl/analysis/convex_polyhedron.h>
 #include <dlfl/errors.h>
 #include <dlfl/format.h>
 #include <dlfl/schemes/detail/boundary_params.h>
+#include <dlfl/schemes/detail/honeycomb_params.h>
+#include <dlfl/schemes/detail/honeycomb_planarize.h>
 #include <dlfl/schemes/detail/honeycomb_remesh.h>
 #include <dlfl/schemes/detail/scheme_table.h>
 
@@ -173,6 +176,14 @@ Mesh zhang_wang_honeycomb(const Mesh& mesh, const ZhangWangParams& p, Origins* o
     const FaceId around = out.face_of_vertex[v.index()];
     result_points[around] = check_finite((1.0 - p.c) * mesh.position(v) + p.c * average, around);
   }
+  if (p.planarize && detail::lateral_rule_applies(mesh) && detail::planarize_new_faces(result)) {
+    // A CCV off its face's plane would bend the face's copy at the next step.
+    for (FaceId f : result.faces()) {
+      const FacePlane plane = face_plane(result, f);
+      if (result.is_hole(f) || !is_set(result_points[f]) || plane.normal == glm::dvec3(0.0)) continue;
+      result_points[f] -= plane.normal * plane.distance(result_points[f]);
+    }
+  }
   return std::move(out.mesh);
 }
 
@@ -207,7 +218,7 @@ SchemeSpec zhang_wang_honeycomb_scheme() {
   // The tension a is a number, or "symmetric" for the paper's a_n = (4 - cos(2 pi / n)) / 9.
   constexpr const char* symmetric = "symmetric";
   const ZhangWangParams d;
-  std::vector<ParamSpec> specs = with_boundary_params({
+  std::vector<ParamSpec> specs = with_planarize_param(with_boundary_params({
       param("a", ParamType::number, symmetric,
             "the tension a_n of formula (3); 'symmetric': the paper's (4 - cos(2 pi / n)) / 9")
           .in(0, 1)
@@ -222,7 +233,7 @@ SchemeSpec zhang_wang_honeycomb_scheme() {
       param("alpha", ParamType::number, d.alpha,
             "the weight of the neighbours in formula (4); the CCVs around get 1 - alpha")
           .in(0, 1),
-  });
+  }));
   return {"honeycomb-zw",
           "Zhang-Wang honeycomb: the honeycomb's topology, every face carrying a central control vertex",
           std::move(specs),
@@ -234,6 +245,7 @@ SchemeSpec zhang_wang_honeycomb_scheme() {
             z.c = p.number("c");
             z.alpha = p.number("alpha");
             z.boundary = boundary_options_from(p);
+            z.planarize = p.has("planarize") && p.integer("planarize") == 1;
             return zhang_wang_honeycomb(m, z, origins);
           },
           [](const MeshCounts& c, const Params&) { return honeycomb_counts(c); }};

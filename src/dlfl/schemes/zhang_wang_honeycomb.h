@@ -83,6 +83,13 @@ struct ZhangWangParams {
   double alpha = 0.5;
   /// What the step does at the boundary loops of an open mesh (see above); the default is formula (15).
   BoundaryOptions boundary = {};
+  /// The lateral rule against the bricklayers' problem (docs/lateral_artifacts.md): when the input is a
+  /// control mesh (an inner vertex whose valence is not 3) with a flat region (two neighbouring faces in one
+  /// plane), the step's new faces are planarized, kept only if that makes no more concave edges and no
+  /// larger mean dihedral angle than the plain step, and then each face's CCV is put on its plane (vertices
+  /// moved, the counts, 3-valence and topology unchanged; vertices on a hole stay). Off by default: off, or
+  /// otherwise, the plain step, bit for bit.
+  bool planarize = false;
 };
 
 /// a_n for a face of n vertices: `p.a` when set, else (4 - cos(2 pi / n)) / 9. Throws InvalidArgument for

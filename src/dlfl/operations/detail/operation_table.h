@@ -57,6 +57,7 @@ std::vector<OperationSpec> dissolve_coplanar_operation_specs();  // dissolve_cop
 std::vector<OperationSpec> remove_2gons_operation_specs();       // remove_2gons.cpp
 std::vector<OperationSpec> remove_valence2_operation_specs();    // remove_valence2.cpp
 std::vector<OperationSpec> planarize_operation_specs();          // planarize.cpp
+std::vector<OperationSpec> hexagonalize_operation_specs();       // hexagonalize.cpp
 std::vector<OperationSpec> smooth_operation_specs();             // smooth.cpp
 std::vector<OperationSpec> spheralize_operation_specs();         // spheralize.cpp
 
@@ -115,6 +116,7 @@ inline constexpr std::array operation_files = {
     &remove_2gons_operation_specs,
     &remove_valence2_operation_specs,
     &planarize_operation_specs,
+    &hexagonalize_operation_specs,
     &smooth_operation_specs,
     &spheralize_operation_specs,
 

@@ -15,6 +15,10 @@ namespace dlfl::detail {
 /// (detail/boundary_params.h).
 std::vector<ParamSpec> honeycomb_param_specs();
 
+/// `specs` followed by `planarize` (integer, 0 or 1, default 0: the lateral rule of
+/// detail/honeycomb_planarize.h), which honeycomb and honeycomb-zw declare (dual-honeycomb-dual does not).
+std::vector<ParamSpec> with_planarize_param(std::vector<ParamSpec> specs);
+
 /// The check hook of both schemes: a constant `a` excludes a0/a1 (ParameterError naming `a`, in the words of
 /// `scheme`), and when `a` is given the resolved set drops the a0/a1 defaults, so that a log records only
 /// the tension in force.

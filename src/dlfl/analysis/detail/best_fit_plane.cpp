@@ -1,4 +1,4 @@
-#include <dlfl/operations/detail/best_fit_plane.h>
+#include <dlfl/analysis/detail/best_fit_plane.h>
 
 #include <algorithm>
 #include <cmath>
