@@ -52,8 +52,8 @@ class EdgeMap {
     std::uint32_t target;
     std::uint32_t value;
   };
-  // Large vectors: a million-face build's map is tens of megabytes, and blocks reused from the block cache come
-  // back mapped instead of being faulted in page by page.
+  // Large vectors: a million-face build's map is tens of megabytes, and blocks reused from the block cache
+  // come back mapped instead of being faulted in page by page.
   LargeVector<std::size_t> start_;
   LargeVector<Slot> slots_;
 };
