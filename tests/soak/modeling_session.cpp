@@ -137,6 +137,14 @@ class Session {
   // The parameters of one op, drawn from its declaration; optional ones are sometimes left out.
   Params params_for(const OperationSpec& op, const Mesh& m) {
     Params p;
+    // delete_vertex removes point spheres only: drawn like other vertices it almost always hits one with
+    // edges and is refused, so that whether it ever succeeds would be luck. Mostly it gets a point sphere.
+    if (op.name == "delete_vertex" && chance(0.7)) {
+      std::vector<VertexId> spheres;
+      for (VertexId v : m.vertices())
+        if (m.is_point_sphere(v)) spheres.push_back(v);
+      if (!spheres.empty()) return {{"vertex", spheres[pick(static_cast<std::uint32_t>(spheres.size()))]}};
+    }
     for (const ParamSpec& spec : op.params) {
       if ((spec.is_optional || !spec.default_value.empty()) && chance(0.4)) continue;
       if (op.name == "subdivide" && spec.name == "iterations") {
