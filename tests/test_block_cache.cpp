@@ -4,7 +4,7 @@
 
 #include <doctest/doctest.h>
 
-#include <dlfl/detail/block_cache.h>
+#include <dlfl/block_cache.h>
 #include <dlfl/detail/large_allocator.h>
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -55,7 +55,24 @@ TEST_CASE("block cache: freed large arrays are kept up to the limit and reused")
   CHECK(block_cache_size() == (std::size_t(4) << 20));
   set_block_cache_limit(0);
   CHECK(block_cache_size() == 0);
-  set_block_cache_limit(std::size_t(1) << 30);
+  set_block_cache_limit(default_block_cache_limit);
+}
+
+TEST_CASE("block cache: the default limit keeps a 200 MiB block and sends a 300 MiB one back") {
+  // The issue's bound on what a library may sit on: at most 256 MiB by default.
+  set_block_cache_limit(default_block_cache_limit);
+  CHECK(block_cache_limit() == (std::size_t(256) << 20));
+  release_block_cache();
+  const auto mib = [](std::size_t n) { return (n << 20) / sizeof(double); };
+  { detail::LargeVector<double> big(mib(300), 0.0); }
+  CHECK(block_cache_size() == 0);
+  { detail::LargeVector<double> kept(mib(200), 0.0); }
+  CHECK(block_cache_size() == (std::size_t(200) << 20));
+  { detail::LargeVector<double> other(mib(100), 0.0); }  // the two together pass the limit: the older goes
+  CHECK(block_cache_size() == (std::size_t(100) << 20));
+  release_block_cache();
+  CHECK(block_cache_size() == 0);
+  CHECK(block_cache_limit() == default_block_cache_limit);  // releasing keeps the limit
 }
 
 #else
@@ -89,7 +106,8 @@ TEST_CASE("block cache: compiled out, large arrays go back to the allocator at t
   CHECK(block_cache_size() == 0);
   release_block_cache();
   CHECK(block_cache_size() == 0);
-  set_block_cache_limit(std::size_t(1) << 30);
+  CHECK(block_cache_limit() == 0);
+  set_block_cache_limit(default_block_cache_limit);
 }
 
 #endif  // DLFL_NO_BLOCK_CACHE

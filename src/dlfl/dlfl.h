@@ -7,6 +7,7 @@
 #include <dlfl/analysis/polyhedron_angles.h>
 #include <dlfl/attribute_types.h>
 #include <dlfl/attributes.h>
+#include <dlfl/block_cache.h>
 #include <dlfl/build_mesh.h>
 #include <dlfl/cells/cell_average.h>
 #include <dlfl/cells/cell_complex.h>
@@ -105,4 +106,5 @@
 #include <dlfl/schemes/sqrt3.h>
 #include <dlfl/schemes/zhang_wang_honeycomb.h>
 #include <dlfl/statistics.h>
+#include <dlfl/thread_count.h>
 #include <dlfl/validate.h>

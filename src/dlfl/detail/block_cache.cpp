@@ -24,6 +24,8 @@ constexpr std::size_t huge = std::size_t(2) << 20;
 // first byte past its end and poisons it once freed.
 void set_block_cache_limit(std::size_t) {}
 
+std::size_t block_cache_limit() { return 0; }
+
 std::size_t block_cache_size() { return 0; }
 
 void release_block_cache() {}
@@ -51,7 +53,7 @@ struct Cache {
   std::mutex mutex;
   std::vector<Block> blocks;  // oldest first
   std::size_t total = 0;
-  std::size_t limit = std::size_t(1) << 30;
+  std::size_t limit = default_block_cache_limit;
 
   // Frees the oldest blocks until `total + incoming <= limit`. Caller holds the mutex.
   void shrink_for(std::size_t incoming) {
@@ -77,6 +79,12 @@ void set_block_cache_limit(std::size_t bytes) {
   std::lock_guard lock(c.mutex);
   c.limit = bytes;
   c.shrink_for(0);
+}
+
+std::size_t block_cache_limit() {
+  Cache& c = cache();
+  std::lock_guard lock(c.mutex);
+  return c.limit;
 }
 
 std::size_t block_cache_size() {
