@@ -1,16 +1,17 @@
 // Mesh file speed: OBJ and binary PLY of a closed quad torus, read (split into parsing and build_mesh) and
-// written, in MB/s of file bytes (docs/formats.md, "I/O speed"). Usage: dlfl_bench_io [faces=1000000] [runs=5]
+// written, in MB/s of file bytes (docs/formats.md, "I/O speed"). Usage: dlfl_bench_io [faces=1000000]
+// [runs=5]
 
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <dlfl/build_mesh.h>
+#include <dlfl/io/detail/file_bytes.h>
+#include <dlfl/io/detail/obj_lines.h>
+#include <dlfl/io/detail/text_io.h>
 #include <dlfl/io/mesh_io.h>
-#include <dlfl/io/obj.h>
-#include <dlfl/io/ply.h>
 #include <dlfl/thread_count.h>
 #include "bench_meshes.h"
 #include "bench_util.h"
@@ -63,15 +64,39 @@ int main(int argc, char** argv) {
     all_equal = all_equal && equal;
     report((std::string("read_mesh ") + ext).c_str(), bytes, read, equal ? "equal" : "NOT EQUAL");
 
-    // The split of read_mesh: the parser (file to polygons, reading included) and build_mesh.
+    // The split of read_mesh: the parser (file to polygons, reading included, as read_mesh reads) and
+    // build_mesh.
     ParsedPolygons parsed;
     const bench::Timing parse = bench::time_runs(runs, [&] {
-      std::ifstream in(path, std::ios::binary);
-      parsed = ext == std::string(".obj") ? parse_obj(in, name) : parse_ply(in, name);
+      const io_detail::FileBytes file(path);
+      parsed = ext == std::string(".obj") ? io_detail::parse_obj_text(file.view(), name)
+                                          : io_detail::parse_ply_text(file.view(), name);
     });
     report("  parse (file to polygons)", bytes, parse);
+    std::size_t size = 0;
+    const bench::Timing load =
+        bench::time_runs(runs, [&] { size += io_detail::FileBytes(path).view().size(); });
+    report("    of which reading the file", bytes, load);
     const bench::Timing build = bench::time_runs(runs, [&] { back = build_mesh(parsed, name); });
     report("  build_mesh", bytes, build);
+    if (ext == std::string(".obj")) {
+      // The OBJ parser proper on the text in memory, serial and chunked, run by turns so that a busy machine
+      // slows both alike.
+      const std::string text = io_detail::read_file(path);
+      bench::Timing serial, chunked;
+      for (int r = 0; r < runs; ++r) {
+        const bench::Timing s =
+            bench::time_runs(1, [&] { parsed = io_detail::parse_obj_serial(text, name); });
+        const bench::Timing c =
+            bench::time_runs(1, [&] { parsed = io_detail::parse_obj_chunked(text, name); });
+        serial.median += s.median / runs;  // the mean, here
+        chunked.median += c.median / runs;
+        serial.best = r == 0 ? s.best : std::min(serial.best, s.best);
+        chunked.best = r == 0 ? c.best : std::min(chunked.best, c.best);
+      }
+      report("  OBJ text, serial parser", bytes, serial, "(mean, not median)");
+      report("  OBJ text, chunked parser", bytes, chunked, "(mean, not median)");
+    }
     std::filesystem::remove(path);
   }
   std::filesystem::remove(dir);

@@ -15,6 +15,7 @@
 #include <dlfl/build_mesh.h>
 #include <dlfl/errors.h>
 #include <dlfl/io/atomic_file.h>
+#include <dlfl/io/detail/file_bytes.h>
 #include <dlfl/io/detail/gltf_file.h>
 #include <dlfl/io/detail/text_io.h>
 #include <dlfl/io/detail/triangles.h>
@@ -76,9 +77,9 @@ Mesh with_vertices(Mesh mesh, const std::string& name) {
   return mesh;
 }
 
-Mesh read_mesh_text(MeshFormat format, const std::string& text, const std::string& name) {
-  io_detail::check_text(format == MeshFormat::ply ? ply_header(text) : std::string_view(text), name);
-  if (text.find_first_not_of(" \t\n\v\f\r") == std::string::npos)
+Mesh read_mesh_text(MeshFormat format, std::string_view text, const std::string& name) {
+  io_detail::check_text(format == MeshFormat::ply ? ply_header(text) : text, name);
+  if (text.find_first_not_of(" \t\n\v\f\r") == std::string_view::npos)
     throw IoError("no vertices: the file is empty", name);
   switch (format) {
     case MeshFormat::obj:
@@ -90,7 +91,7 @@ Mesh read_mesh_text(MeshFormat format, const std::string& text, const std::strin
     case MeshFormat::glb:
       break;  // PLY below; STL and glTF are not text, see read_mesh
     case MeshFormat::json: {
-      nlohmann::json doc = nlohmann::json::parse(text, nullptr, false);
+      nlohmann::json doc = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
       if (doc.is_discarded()) throw IoError("not valid JSON", name);
       return mesh_from_json(doc, name);
     }
@@ -107,9 +108,11 @@ Mesh read_mesh(const std::filesystem::path& path) {
     throw IoError("glTF is an output format here; read OBJ, OFF, PLY, STL or the native JSON", name);
   }
   if (format == MeshFormat::stl) {
-    return with_vertices(build_mesh(io_detail::parse_stl_text(io_detail::read_file(path), name), name), name);
+    const io_detail::FileBytes bytes(path);
+    return with_vertices(build_mesh(io_detail::parse_stl_text(bytes.view(), name), name), name);
   }
-  return with_vertices(read_mesh_text(format, io_detail::read_file(path), name), name);
+  const io_detail::FileBytes bytes(path);
+  return with_vertices(read_mesh_text(format, bytes.view(), name), name);
 }
 
 ValidationReport validate_mesh_file(const std::filesystem::path& path, std::size_t max_violations) {

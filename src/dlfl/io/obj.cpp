@@ -1,5 +1,6 @@
 // Wavefront OBJ: `v` and `f` statements; everything else is skipped.
 
+#include <dlfl/io/detail/obj_lines.h>
 #include <dlfl/io/detail/text_io.h>
 #include <dlfl/io/obj.h>
 
@@ -7,35 +8,27 @@ namespace dlfl {
 
 namespace io_detail {
 
-ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
+ParsedPolygons parse_obj_serial(std::string_view text, const std::string& name) {
   ParsedPolygons parsed;
   parsed.numbering.first_vertex = 1;  // OBJ indices start at 1
   PolygonSoup& soup = parsed.soup;
   LineScanner s(text, name, true);
-  while (s.next_line()) {
-    const std::string_view keyword = s.token();
-    if (keyword == "v") {
-      // A 4th value (w) or vertex colours may follow x y z; they are ignored.
-      soup.positions.push_back(s.point());
-      parsed.vertex_lines.push_back(s.line());
-    } else if (keyword == "f") {
-      // Negative indices count back from the vertices read so far; positive ones are checked after the whole
-      // file, so that a face may name a vertex defined further down.
-      const auto defined = static_cast<std::int64_t>(soup.positions.size());
-      std::size_t count = 0;
-      while (!s.at_eol()) {
-        soup.indices.push_back(obj_vertex_index(s, defined));
-        ++count;
-      }
-      if (count < 3) s.fail(face_size_error(std::int64_t(count)));
-      if (soup.indices.size() > max_indices) s.fail("too many face vertices");
-      end_face(parsed, s.line());
-    }
-  }
+  scan_obj_lines(
+      s, 0, soup.indices,
+      [&](const glm::dvec3& p, std::size_t line) {
+        soup.positions.push_back(p);
+        parsed.vertex_lines.push_back(line);
+      },
+      [&](std::size_t line) { end_face(parsed, line); });
   check_obj_indices(
       soup.num_faces(), [&](std::size_t f) { return soup.face(f); }, parsed.face_lines, soup.positions.size(),
       name);
   return parsed;
+}
+
+// A file of a chunk or less gains nothing from the chunked parser's two passes.
+ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
+  return text.size() > obj_chunk_bytes ? parse_obj_chunked(text, name) : parse_obj_serial(text, name);
 }
 
 }  // namespace io_detail

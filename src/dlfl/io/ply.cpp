@@ -294,6 +294,82 @@ void read_ascii(LineScanner& s, const Header& h, ParsedPolygons& parsed) {
   }
 }
 
+// The fast paths of read_binary for the layouts that writers use (this library's among them): they take
+// whole runs of elements at once and stop before the first element that is irregular in any way (cut short,
+// a short face, an index out of range, a coordinate not finite), which the general loop then reads, to
+// report it. Each returns how many elements it took and moves `p` past them.
+
+// A vertex element of exactly x, y, z, all double or all float.
+std::size_t fast_vertices(const Element& e, const unsigned char*& p, std::size_t left,
+                          ParsedPolygons& parsed) {
+  const auto& props = e.properties;
+  if (props.size() != 3 || props[0].role != Role::x || props[1].role != Role::y || props[2].role != Role::z)
+    return 0;
+  const Scalar type = props[0].type;
+  if ((type != Scalar::f64 && type != Scalar::f32) || props[1].type != type || props[2].type != type)
+    return 0;
+  const std::size_t stride = 3 * size_of(type);
+  const std::size_t count = std::min(e.count, left / stride);
+  std::vector<glm::dvec3>& positions = parsed.soup.positions;
+  const std::size_t first = positions.size();
+  positions.resize(first + count);
+  glm::dvec3* out = positions.data() + first;
+  if (type == Scalar::f64 && std::endian::native == std::endian::little && sizeof(glm::dvec3) == 24) {
+    std::memcpy(static_cast<void*>(out), p, count * stride);  // the file's layout is the vector's
+  } else {
+    for (std::size_t i = 0; i < count; ++i) {
+      const unsigned char* v = p + i * stride;
+      out[i] = {load_real(type, v), load_real(type, v + stride / 3), load_real(type, v + 2 * stride / 3)};
+    }
+  }
+  std::size_t taken = 0;
+  while (taken < count && std::isfinite(out[taken].x) && std::isfinite(out[taken].y) &&
+         std::isfinite(out[taken].z)) {
+    ++taken;
+  }
+  positions.resize(first + taken);
+  parsed.vertex_lines.resize(parsed.vertex_lines.size() + taken, 0);
+  p += taken * stride;
+  return taken;
+}
+
+// A face element of exactly the index list, with a uchar or uint count and uint or int indices.
+std::size_t fast_faces(const Element& e, const unsigned char*& p, const unsigned char* end, std::size_t nv,
+                       ParsedPolygons& parsed) {
+  if (e.properties.size() != 1) return 0;
+  const Property& prop = e.properties[0];
+  if (prop.role != Role::indices || (prop.count_type != Scalar::u8 && prop.count_type != Scalar::u32) ||
+      (prop.type != Scalar::u32 && prop.type != Scalar::i32)) {
+    return 0;
+  }
+  const std::size_t count_size = size_of(prop.count_type);
+  std::vector<std::uint32_t>& indices = parsed.soup.indices;
+  std::size_t taken = 0;
+  for (; taken < e.count; ++taken) {
+    if (static_cast<std::size_t>(end - p) < count_size) break;
+    const std::uint64_t n = prop.count_type == Scalar::u8 ? std::uint64_t{p[0]} : load<std::uint32_t>(p);
+    if (n < 3 || static_cast<std::size_t>(end - p - count_size) / 4 < n) break;
+    const std::size_t first = indices.size();
+    if (first + n > max_indices) break;
+    indices.resize(first + n);
+    std::uint32_t* out = indices.data() + first;
+    std::memcpy(out, p + count_size, n * 4);
+    // Both index types pass as unsigned: a negative int is then 2^31 or more, past any vertex count.
+    std::uint32_t largest = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+      out[j] = little_endian(out[j]);
+      largest = std::max(largest, out[j]);
+    }
+    if (largest >= nv || (prop.type == Scalar::i32 && largest > 0x7FFFFFFFu)) {
+      indices.resize(first);
+      break;
+    }
+    end_face(parsed, 0);
+    p += count_size + n * 4;
+  }
+  return taken;
+}
+
 // Binary data have no lines: errors name the element instead ("face 12") with line 0.
 void read_binary(std::string_view data, const Header& h, ParsedPolygons& parsed, const std::string& name) {
   reserve(parsed, h, data.size());
@@ -304,7 +380,10 @@ void read_binary(std::string_view data, const Header& h, ParsedPolygons& parsed,
   auto left = [&] { return static_cast<std::size_t>(end - p); };
   for (const Element& e : h.elements) {
     if (e.properties.empty()) continue;  // nothing to read, however many it declares
-    for (std::size_t i = 0; i < e.count; ++i) {
+    std::size_t i = 0;
+    if (e.is_vertex()) i = fast_vertices(e, p, left(), parsed);
+    if (e.is_face()) i = fast_faces(e, p, end, nv, parsed);
+    for (; i < e.count; ++i) {
       auto fail = [&](const std::string& what) { throw IoError(element_at(e, i) + ": " + what, name, 0); };
       const char* const truncated = "the file ends early";
       glm::dvec3 position(0.0);
@@ -388,10 +467,16 @@ void write_ply(std::ostream& out, const PolygonSoup& soup, bool binary) {
   w.text(wide ? "\nproperty list uint uint vertex_indices\nend_header\n"
               : "\nproperty list uchar uint vertex_indices\nend_header\n");
   if (binary) {
-    for (const glm::dvec3& p : soup.positions) {
-      w.binary(p.x);
-      w.binary(p.y);
-      w.binary(p.z);
+    if (std::endian::native == std::endian::little && sizeof(glm::dvec3) == 24) {
+      // The vertex block is the positions' memory as it is.
+      w.text(
+          {reinterpret_cast<const char*>(soup.positions.data()), soup.positions.size() * sizeof(glm::dvec3)});
+    } else {
+      for (const glm::dvec3& p : soup.positions) {
+        w.binary(p.x);
+        w.binary(p.y);
+        w.binary(p.z);
+      }
     }
     for (std::size_t f = 0; f < soup.num_faces(); ++f) {
       const auto face = soup.face(f);
@@ -400,7 +485,7 @@ void write_ply(std::ostream& out, const PolygonSoup& soup, bool binary) {
       } else {
         w.binary(static_cast<std::uint8_t>(face.size()));
       }
-      for (std::uint32_t i : face) w.binary(i);
+      w.binary_values(face);
     }
   } else {
     for (const glm::dvec3& p : soup.positions) w.point_line(p);

@@ -69,14 +69,19 @@ inline void end_face(ParsedPolygons& parsed, std::size_t line) {
 /// text.
 class LineScanner {
  public:
-  /// With `hash_comments`, a token starting with '#' ends the line (OBJ, OFF).
-  LineScanner(std::string_view text, const std::string& name, bool hash_comments)
+  /// With `hash_comments`, a token starting with '#' ends the line (OBJ, OFF). `lines_before` is the number
+  /// of lines of the file before `text` when `text` is a part of it that starts at a line (a chunk parsed on
+  /// its own), so that errors name the file's line.
+  LineScanner(std::string_view text, const std::string& name, bool hash_comments,
+              std::size_t lines_before = 0)
       : next_(text.data()),
         end_(text.data() + text.size()),
         begin_(text.data()),
         name_(name),
+        line_(lines_before),
         comments_(hash_comments) {
-    if (text.starts_with("\xEF\xBB\xBF")) next_ += 3;  // a UTF-8 byte order mark
+    // A UTF-8 byte order mark, at the start of the file only.
+    if (lines_before == 0 && text.starts_with("\xEF\xBB\xBF")) next_ += 3;
     p_ = eol_ = next_;
   }
 
@@ -149,6 +154,22 @@ class LineScanner {
   std::int64_t integer(const char* what, char suffix = 0) {
     if (at_eol()) fail(std::string("missing ") + what);
     const char* b = skip_plus();
+    // The common case, a few plain digits ending the token (or followed by the suffix), without from_chars;
+    // anything else takes the general path below.
+    std::uint64_t digits = 0;
+    const char* q = b;
+    for (; q != eol_ && q - b < 18 && unsigned(*q - '0') < 10; ++q) digits = digits * 10 + unsigned(*q - '0');
+    if (q != b && (q == eol_ || unsigned(*q - '0') >= 10)) {
+      if (suffix != 0 && q != eol_ && *q == suffix) {
+        while (q != eol_ && !is_blank(*q)) ++q;
+        p_ = q;
+        return static_cast<std::int64_t>(digits);
+      }
+      if (ends_token(q)) {
+        p_ = q;
+        return static_cast<std::int64_t>(digits);
+      }
+    }
     std::int64_t value = 0;
     auto [ptr, ec] = std::from_chars(b, eol_, value);
     if (ec == std::errc::result_out_of_range) fail(std::string(what) + " '" + word() + "' is out of range");
@@ -189,7 +210,7 @@ class LineScanner {
   const char* end_;
   const char* begin_;
   const std::string& name_;
-  std::size_t line_ = 0;
+  std::size_t line_;
   bool comments_;
 };
 
@@ -307,6 +328,16 @@ class BlockWriter {
     value = little_endian(value);
     std::memcpy(room(sizeof(T)), &value, sizeof(T));
     size_ += sizeof(T);
+  }
+  /// The bytes of each value in little-endian order: one copy on a little-endian host.
+  void binary_values(std::span<const std::uint32_t> values) {
+    const std::size_t bytes = values.size() * sizeof(std::uint32_t);
+    if (std::endian::native == std::endian::little && bytes <= capacity) {
+      std::memcpy(room(bytes), values.data(), bytes);
+      size_ += bytes;
+      return;
+    }
+    for (std::uint32_t v : values) binary(v);
   }
   void flush();
 
