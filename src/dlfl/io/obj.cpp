@@ -1,7 +1,10 @@
 // Wavefront OBJ: `v` and `f` statements; everything else is skipped.
 
+#include <vector>
+
 #include <dlfl/io/detail/obj_lines.h>
 #include <dlfl/io/detail/text_io.h>
+#include <dlfl/io/detail/write_in_parts.h>
 #include <dlfl/io/obj.h>
 
 namespace dlfl {
@@ -35,18 +38,23 @@ ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
 
 void write_obj(std::ostream& out, const PolygonSoup& soup) {
   io_detail::BlockWriter w(out);
-  for (const glm::dvec3& p : soup.positions) {
-    w.text("v ");
-    w.point_line(p);
-  }
-  for (std::size_t f = 0; f < soup.num_faces(); ++f) {
-    w.put('f');
-    for (std::uint32_t i : soup.face(f)) {
-      w.put(' ');
-      w.number(std::uint64_t{i} + 1);
+  std::vector<io_detail::TextWriter> pool;
+  io_detail::write_in_parts(w, soup.positions.size(), pool, [&](auto& part, std::size_t b, std::size_t e) {
+    for (std::size_t v = b; v < e; ++v) {
+      part.text("v ");
+      part.point_line(soup.positions[v]);
     }
-    w.put('\n');
-  }
+  });
+  io_detail::write_in_parts(w, soup.num_faces(), pool, [&](auto& part, std::size_t b, std::size_t e) {
+    for (std::size_t f = b; f < e; ++f) {
+      part.put('f');
+      for (std::uint32_t i : soup.face(f)) {
+        part.put(' ');
+        part.number(std::uint64_t{i} + 1);
+      }
+      part.put('\n');
+    }
+  });
   w.flush();
 }
 

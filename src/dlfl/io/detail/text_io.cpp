@@ -52,9 +52,11 @@ std::string read_all(std::istream& in, const std::string& name, std::size_t size
 }
 
 void BlockWriter::text(std::string_view s) {
-  if (s.size() > capacity - size_) {
+  // A large piece goes to the stream as it is, rather than through the buffer.
+  const bool large = s.size() >= capacity / 4;
+  if (large || s.size() > capacity - size_) {
     flush();
-    if (s.size() > capacity) {
+    if (large) {
       out_.write(s.data(), static_cast<std::streamsize>(s.size()));
       return;
     }
