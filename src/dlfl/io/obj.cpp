@@ -6,6 +6,7 @@
 #include <dlfl/io/detail/text_io.h>
 #include <dlfl/io/detail/write_in_parts.h>
 #include <dlfl/io/obj.h>
+#include <dlfl/thread_count.h>
 
 namespace dlfl {
 
@@ -29,9 +30,10 @@ ParsedPolygons parse_obj_serial(std::string_view text, const std::string& name) 
   return parsed;
 }
 
-// A file of a chunk or less gains nothing from the chunked parser's two passes.
+// The chunked parser's extra pass pays only with threads to share the chunks, and a file of more than one.
 ParsedPolygons parse_obj_text(std::string_view text, const std::string& name) {
-  return text.size() > obj_chunk_bytes ? parse_obj_chunked(text, name) : parse_obj_serial(text, name);
+  const bool chunked = text.size() > obj_chunk_bytes && thread_count() > 1;
+  return chunked ? parse_obj_chunked(text, name) : parse_obj_serial(text, name);
 }
 
 }  // namespace io_detail
