@@ -104,6 +104,17 @@ TEST_CASE("obj chunks: the serial parser's polygons and lines, whatever the chun
   }
 }
 
+TEST_CASE("obj chunks: only the file's first byte order mark is skipped") {
+  // After the first mark, a second one is part of the first token, which is then no statement.
+  const std::string text = "\xEF\xBB\xBF\xEF\xBB\xBFv 9 9 9\n" + blocks(3);
+  const ParsedPolygons serial = parse_obj_serial(text, "marks.obj");
+  CHECK(serial.soup.positions.size() == 3 * block_vertices);
+  for (std::size_t chunk_bytes : {std::size_t{1}, std::size_t{40}, text.size()}) {
+    CAPTURE(chunk_bytes);
+    check_same(parse_obj_chunked(text, "marks.obj", chunk_bytes), serial);
+  }
+}
+
 TEST_CASE("obj chunks: a file of several default chunks, and any thread count") {
   // Over 2 MiB: parse_obj_text splits it into chunks of obj_chunk_bytes.
   const std::size_t n = 3 * io_detail::obj_chunk_bytes / block.size();

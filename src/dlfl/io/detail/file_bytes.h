@@ -10,9 +10,9 @@
 namespace dlfl::io_detail {
 
 /// The bytes of a file. A regular file of a megabyte or more is mapped into memory (POSIX mmap), which
-/// spares copying it and clearing a buffer for it; any other file (small, a pipe, or where mapping fails or
-/// is not available) is read as read_file reads it. Like any mapping, a mapped file must not be truncated
-/// by another process while it is read.
+/// spares copying it and clearing a buffer for it; any other file (small, a pipe, or where mapping fails) is
+/// read from the same descriptor into memory (elsewhere than POSIX: read_file). Like any mapping, a mapped
+/// file must not be truncated by another process while it is read.
 class FileBytes {
  public:
   /// Throws IoError naming the path as read_file does: a directory, a file that cannot be opened or read.

@@ -24,7 +24,9 @@ bool is_statement(const char* p, const char* eol, char keyword) {
   return p != eol && *p == keyword && (p + 1 == eol || is_blank(p[1]));
 }
 
-ChunkCounts count_chunk(std::string_view chunk) {
+// The first chunk starts with the file, whose byte order mark the scanner skips: so does the count.
+ChunkCounts count_chunk(std::string_view chunk, bool first) {
+  if (first && chunk.starts_with("\xEF\xBB\xBF")) chunk.remove_prefix(3);
   ChunkCounts counts;
   const char* p = chunk.data();
   const char* const end = p + chunk.size();
@@ -46,18 +48,16 @@ struct Mismatch {};
 }  // namespace
 
 ParsedPolygons parse_obj_chunked(std::string_view text, const std::string& name, std::size_t chunk_bytes) {
-  // The byte order mark is skipped here as the serial scanner skips it, so that the first chunk starts
-  // at the first line.
-  const std::size_t bom = text.starts_with("\xEF\xBB\xBF") ? 3 : 0;
-  // Chunk c is [starts[c], starts[c + 1]): each starts right after a newline, at or after bom + c * bytes.
-  std::vector<std::size_t> starts{bom};
+  // Chunk c is [starts[c], starts[c + 1]): each but the first starts right after a newline, at or after
+  // c * chunk_bytes.
+  std::vector<std::size_t> starts{0};
   if (chunk_bytes == 0) chunk_bytes = 1;
-  for (std::size_t at = bom + chunk_bytes; at < text.size(); at += chunk_bytes) {
+  for (std::size_t at = chunk_bytes; at < text.size(); at += chunk_bytes) {
     at = std::max(at, starts.back() + 1);
     if (at > text.size()) break;
     const std::size_t nl = text.find('\n', at - 1);
     if (nl == std::string_view::npos || nl + 1 >= text.size()) break;
-    if (nl + 1 > starts.back()) starts.push_back(nl + 1);
+    starts.push_back(nl + 1);
     at = nl + 1;
   }
   starts.push_back(text.size());
@@ -66,7 +66,7 @@ ParsedPolygons parse_obj_chunked(std::string_view text, const std::string& name,
 
   std::vector<ChunkCounts> before(chunks + 1);
   detail::parallel_chunks(chunks, 1, [&](std::size_t b, std::size_t e) {
-    for (std::size_t c = b; c < e; ++c) before[c + 1] = count_chunk(chunk_text(c));
+    for (std::size_t c = b; c < e; ++c) before[c + 1] = count_chunk(chunk_text(c), c == 0);
   });
   for (std::size_t c = 0; c < chunks; ++c) {
     before[c + 1].lines += before[c].lines;
