@@ -1,10 +1,10 @@
-// dlfl_bench_end_to_end [runs=1] [output faces...=1000000 16000000]: whole processes, file in to file out, for
-// one Catmull-Clark step to about each number of faces: `dlfl subdivide IN -s catmull-clark -o OUT` against
-// cgal_subdivide and openmesh_subdivide (the same step in CGAL 5.5 and OpenMesh, with their own readers and
-// writers), for a binary PLY and an OBJ input of the same torus grid of quads. Prints each process's wall time
-// (median of the runs) and peak resident memory (wait4's ru_maxrss), and checks that every output file holds
-// the closed-form number of faces (exit 1 if not). The files go to $TMPDIR/dlfl_bench_end_to_end (or /tmp),
-// removed at the end.
+// dlfl_bench_end_to_end [runs=1] [output faces...=1000000 16000000]: whole processes, file in to file out,
+// for one Catmull-Clark step to about each number of faces: `dlfl subdivide IN -s catmull-clark -o OUT`
+// against cgal_subdivide and openmesh_subdivide (the same step in CGAL 5.5 and OpenMesh, with their own
+// readers and writers), for a binary PLY and an OBJ input of the same torus grid of quads. Prints each
+// process's wall time (median of the runs) and peak resident memory (wait4's ru_maxrss), and checks that
+// every output file holds the closed-form number of faces (exit 1 if not). The files go to
+// $TMPDIR/dlfl_bench_end_to_end (or /tmp), removed at the end.
 
 #include <algorithm>
 #include <cstdio>
@@ -16,6 +16,7 @@
 #include <dlfl/build_mesh.h>
 #include <dlfl/io/mesh_io.h>
 #include "bench_meshes.h"
+#include "bench_util.h"
 #include "child_process.h"
 #include "file_face_count.h"
 #include "peer_schemes.h"
@@ -72,6 +73,7 @@ int main(int argc, char** argv) {
   const fs::path dir = fs::path(tmp ? tmp : "/tmp") / "dlfl_bench_end_to_end";
   fs::create_directories(dir);
   bool all_agree = true;
+  const double steal_before = steal_seconds();
   std::printf("whole processes, one Catmull-Clark step, median of %d run(s)\n\n", runs);
   std::printf("%-6s %10s %-9s %9s %9s %9s %10s %10s\n", "format", "out faces", "program", "wall s", "user s",
               "sys s", "peak MiB", "faces ok");
@@ -88,8 +90,8 @@ int main(int argc, char** argv) {
         const auto written = run.exit_code == 0 ? file_face_count(out) : std::nullopt;
         const bool agree = written && *written == expected;
         all_agree = all_agree && agree;
-        std::printf("%-6s %10zu %-9s %9.3f %9.3f %9.3f %10.1f %10s\n", format, expected, program.label, run.wall,
-                    run.user, run.system, run.peak_rss_mib,
+        std::printf("%-6s %10zu %-9s %9.3f %9.3f %9.3f %10.1f %10s\n", format, expected, program.label,
+                    run.wall, run.user, run.system, run.peak_rss_mib,
                     run.exit_code != 0 ? "FAILED" : (agree ? "yes" : "MISMATCH"));
         std::fflush(stdout);
         fs::remove(out);
@@ -98,6 +100,8 @@ int main(int argc, char** argv) {
     }
   }
   fs::remove(dir);
+  std::printf("\nCPU time stolen by the VM's host meanwhile: %.1f s; load average now: %s",
+              steal_seconds() - steal_before, load_average().c_str());
   std::printf("\noutput face counts %s\n", all_agree ? "agree" : "DIFFER: see the rows marked above");
   return all_agree ? 0 : 1;
 }

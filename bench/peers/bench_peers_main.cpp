@@ -13,6 +13,7 @@
 #include <thread>
 #include <vector>
 
+#include "bench_util.h"
 #include "child_process.h"
 #include "cold_runs.h"
 #include "peer_table.h"
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
   const char* threads = std::getenv("DLFL_THREADS");
   std::printf("cold steps, median of %d fresh processes each; dlfl threads: %s (%u cores)\n\n", runs,
               threads ? threads : "default", std::thread::hardware_concurrency());
+  const double steal_before = steal_seconds();
   print_detail_header();
   std::vector<PeerRow> rows;
   try {
@@ -61,6 +63,8 @@ int main(int argc, char** argv) {
   }
   print_summary(rows);
   print_scaling(rows);
+  std::printf("\nCPU time stolen by the VM's host meanwhile: %.1f s; load average now: %s",
+              steal_seconds() - steal_before, load_average().c_str());
   const bool agree = std::all_of(rows.begin(), rows.end(), faces_agree);
   std::printf("\nface counts %s\n", agree ? "agree across libraries" : "DIFFER: see the rows marked above");
   return agree ? 0 : 1;

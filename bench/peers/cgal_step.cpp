@@ -40,11 +40,20 @@ std::optional<StepResult> cgal_step(Scheme scheme, const PolygonSoup& input) {
   const auto one = CGAL::parameters::number_of_iterations(1);
   const StepCost cost = measure_step([&] {
     switch (scheme) {
-      case Scheme::catmull_clark: sm3::CatmullClark_subdivision(m, one); break;
-      case Scheme::loop: sm3::Loop_subdivision(m, one); break;
-      case Scheme::sqrt3: sm3::Sqrt3_subdivision(m, one); break;
-      case Scheme::doo_sabin: sm3::DooSabin_subdivision(m, one); break;
-      case Scheme::honeycomb: break;
+      case Scheme::catmull_clark:
+        sm3::CatmullClark_subdivision(m, one);
+        break;
+      case Scheme::loop:
+        sm3::Loop_subdivision(m, one);
+        break;
+      case Scheme::sqrt3:
+        sm3::Sqrt3_subdivision(m, one);
+        break;
+      case Scheme::doo_sabin:
+        sm3::DooSabin_subdivision(m, one);
+        break;
+      case Scheme::honeycomb:
+        break;
     }
   });
   return StepResult{cost, input_faces, m.number_of_faces()};

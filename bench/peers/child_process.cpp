@@ -19,7 +19,8 @@ double seconds(const timeval& t) { return double(t.tv_sec) + double(t.tv_usec) *
 
 }  // namespace
 
-ChildRun run_child(const std::vector<std::string>& argv, const std::vector<std::pair<std::string, std::string>>& env) {
+ChildRun run_child(const std::vector<std::string>& argv,
+                   const std::vector<std::pair<std::string, std::string>>& env) {
   ChildRun run;
   std::vector<char*> args;
   for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));

@@ -21,8 +21,8 @@ std::optional<ColdResult> cold_runs(const std::string& helper, const Variant& va
     if (child.exit_code == scheme_unavailable) return std::nullopt;
     const auto report = parse_report(child.output);
     if (child.exit_code != 0 || !report) {
-      throw std::runtime_error(variant.library + " " + scheme_name(variant.scheme) + " n=" +
-                               std::to_string(variant.n) + ": dlfl_peer_step failed (exit " +
+      throw std::runtime_error(variant.library + " " + scheme_name(variant.scheme) +
+                               " n=" + std::to_string(variant.n) + ": dlfl_peer_step failed (exit " +
                                std::to_string(child.exit_code) + ")");
     }
     results.push_back({*report, child.peak_rss_mib});

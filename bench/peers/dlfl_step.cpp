@@ -14,11 +14,16 @@ namespace {
 
 Mesh step(Scheme scheme, const Mesh& m) {
   switch (scheme) {
-    case Scheme::catmull_clark: return catmull_clark(m);
-    case Scheme::loop: return loop(m);
-    case Scheme::sqrt3: return sqrt3(m);
-    case Scheme::doo_sabin: return doo_sabin(m);
-    case Scheme::honeycomb: return honeycomb(m);
+    case Scheme::catmull_clark:
+      return catmull_clark(m);
+    case Scheme::loop:
+      return loop(m);
+    case Scheme::sqrt3:
+      return sqrt3(m);
+    case Scheme::doo_sabin:
+      return doo_sabin(m);
+    case Scheme::honeycomb:
+      return honeycomb(m);
   }
   throw InvalidArgument("unknown scheme");
 }

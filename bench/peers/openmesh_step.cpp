@@ -43,11 +43,15 @@ StepResult run(const PolygonSoup& input) {
 std::optional<StepResult> openmesh_step(Scheme scheme, const PolygonSoup& input) {
   namespace uniform = OpenMesh::Subdivider::Uniform;
   switch (scheme) {
-    case Scheme::catmull_clark: return run<uniform::CatmullClarkT<OmPolyMesh>, OmPolyMesh>(input);
-    case Scheme::loop: return run<uniform::LoopT<OmTriMesh>, OmTriMesh>(input);
-    case Scheme::sqrt3: return run<uniform::Sqrt3T<OmTriMesh>, OmTriMesh>(input);
+    case Scheme::catmull_clark:
+      return run<uniform::CatmullClarkT<OmPolyMesh>, OmPolyMesh>(input);
+    case Scheme::loop:
+      return run<uniform::LoopT<OmTriMesh>, OmTriMesh>(input);
+    case Scheme::sqrt3:
+      return run<uniform::Sqrt3T<OmTriMesh>, OmTriMesh>(input);
     case Scheme::doo_sabin:
-    case Scheme::honeycomb: return std::nullopt;
+    case Scheme::honeycomb:
+      return std::nullopt;
   }
   return std::nullopt;
 }

@@ -14,16 +14,21 @@ namespace dlfl::bench {
 
 enum class Scheme { catmull_clark, loop, sqrt3, doo_sabin, honeycomb };
 
-inline constexpr Scheme all_schemes[] = {Scheme::catmull_clark, Scheme::loop, Scheme::sqrt3, Scheme::doo_sabin,
-                                         Scheme::honeycomb};
+inline constexpr Scheme all_schemes[] = {Scheme::catmull_clark, Scheme::loop, Scheme::sqrt3,
+                                         Scheme::doo_sabin, Scheme::honeycomb};
 
 inline const char* scheme_name(Scheme s) {
   switch (s) {
-    case Scheme::catmull_clark: return "catmull-clark";
-    case Scheme::loop: return "loop";
-    case Scheme::sqrt3: return "sqrt3";
-    case Scheme::doo_sabin: return "doo-sabin";
-    case Scheme::honeycomb: return "honeycomb";
+    case Scheme::catmull_clark:
+      return "catmull-clark";
+    case Scheme::loop:
+      return "loop";
+    case Scheme::sqrt3:
+      return "sqrt3";
+    case Scheme::doo_sabin:
+      return "doo-sabin";
+    case Scheme::honeycomb:
+      return "honeycomb";
   }
   return "?";
 }
@@ -44,11 +49,16 @@ inline bool takes_triangles(Scheme s) { return s == Scheme::loop || s == Scheme:
 inline std::size_t output_faces(Scheme s, std::size_t n) {
   const std::size_t n2 = n * n;
   switch (s) {
-    case Scheme::catmull_clark: return 4 * n2;
-    case Scheme::doo_sabin: return 4 * n2;
-    case Scheme::honeycomb: return 2 * n2;
-    case Scheme::loop: return 8 * n2;
-    case Scheme::sqrt3: return 6 * n2;
+    case Scheme::catmull_clark:
+      return 4 * n2;
+    case Scheme::doo_sabin:
+      return 4 * n2;
+    case Scheme::honeycomb:
+      return 2 * n2;
+    case Scheme::loop:
+      return 8 * n2;
+    case Scheme::sqrt3:
+      return 6 * n2;
   }
   return 0;
 }

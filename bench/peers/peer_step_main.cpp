@@ -1,7 +1,7 @@
-// dlfl_peer_step LIBRARY SCHEME N: one cold step, the unit of dlfl_bench_peers. Builds the n x n torus grid of
-// the scheme (peer_schemes.h) in LIBRARY (dlfl, cgal or openmesh), times one step alone and prints its report
-// (step_report.h). Each run is a fresh process, so no step finds memory or caches warmed by another. Exits
-// with 3 if the library has no such scheme, 2 on bad arguments.
+// dlfl_peer_step LIBRARY SCHEME N: one cold step, the unit of dlfl_bench_peers. Builds the n x n torus grid
+// of the scheme (peer_schemes.h) in LIBRARY (dlfl, cgal or openmesh), times one step alone and prints its
+// report (step_report.h). Each run is a fresh process, so no step finds memory or caches warmed by another.
+// Exits with 3 if the library has no such scheme, 2 on bad arguments.
 
 #include <cstdio>
 #include <cstdlib>

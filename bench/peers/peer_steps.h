@@ -12,7 +12,7 @@
 namespace dlfl::bench {
 
 std::optional<StepResult> dlfl_step(Scheme scheme, const PolygonSoup& input);
-std::optional<StepResult> cgal_step(Scheme scheme, const PolygonSoup& input);     // Subdivision_method_3
+std::optional<StepResult> cgal_step(Scheme scheme, const PolygonSoup& input);      // Subdivision_method_3
 std::optional<StepResult> openmesh_step(Scheme scheme, const PolygonSoup& input);  // Subdivider::Uniform
 
 }  // namespace dlfl::bench

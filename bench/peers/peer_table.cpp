@@ -35,17 +35,18 @@ std::string ratio_cell(const std::optional<ColdResult>& a, const std::optional<C
 }  // namespace
 
 void print_detail_header() {
-  std::printf("%-14s %9s %-11s %9s %9s %9s %6s %10s %8s %10s %10s\n", "scheme", "n", "library", "step s", "user s",
-              "sys s", "sys %", "min flt", "maj flt", "peak MiB", "out faces");
+  std::printf("%-14s %9s %-11s %9s %9s %9s %6s %10s %8s %10s %10s\n", "scheme", "n", "library", "step s",
+              "user s", "sys s", "sys %", "min flt", "maj flt", "peak MiB", "out faces");
 }
 
 void print_detail(const PeerRow& row, const char* label, const std::optional<ColdResult>& r) {
   if (!r) return;
   const StepCost& c = r->step.cost;
   const double cpu = c.user + c.system;
-  std::printf("%-14s %9zu %-11s %9.3f %9.3f %9.3f %5.1f%% %10ld %8ld %10.1f %10zu%s\n", scheme_name(row.scheme),
-              row.n, label, c.wall, c.user, c.system, cpu > 0 ? 100 * c.system / cpu : 0.0, c.minor_faults,
-              c.major_faults, r->peak_rss_mib, r->step.output_faces,
+  std::printf("%-14s %9zu %-11s %9.3f %9.3f %9.3f %5.1f%% %10ld %8ld %10.1f %10zu%s\n",
+              scheme_name(row.scheme), row.n, label, c.wall, c.user, c.system,
+              cpu > 0 ? 100 * c.system / cpu : 0.0, c.minor_faults, c.major_faults, r->peak_rss_mib,
+              r->step.output_faces,
               r->step.output_faces == row.expected_faces ? "" : "  FACE COUNT MISMATCH");
   std::fflush(stdout);
 }
@@ -59,8 +60,8 @@ bool faces_agree(const PeerRow& row) {
 
 void print_summary(const std::vector<PeerRow>& rows) {
   std::printf("\nstep wall seconds (median of cold runs); ratios > 1: dlfl is faster\n");
-  std::printf("%-14s %10s %9s %9s %9s %9s %9s %9s %9s\n", "scheme", "out faces", "dlfl", "dlfl 1T", "2T vs 1T",
-              "CGAL", "OpenMesh", "CGAL/dlfl", "OM/dlfl");
+  std::printf("%-14s %10s %9s %9s %9s %9s %9s %9s %9s\n", "scheme", "out faces", "dlfl", "dlfl 1T",
+              "2T vs 1T", "CGAL", "OpenMesh", "CGAL/dlfl", "OM/dlfl");
   for (const PeerRow& row : rows) {
     std::printf("%-14s %10zu %s %s %s %s %s %s %s%s\n", scheme_name(row.scheme), row.expected_faces,
                 seconds_cell(row.dlfl).c_str(), seconds_cell(row.dlfl_one_thread).c_str(),
@@ -84,7 +85,8 @@ void print_scaling(const std::vector<PeerRow>& rows) {
     const char* label;
     std::optional<ColdResult> PeerRow::*member;
   };
-  const Column columns[] = {{"dlfl", &PeerRow::dlfl}, {"CGAL", &PeerRow::cgal}, {"OpenMesh", &PeerRow::openmesh}};
+  const Column columns[] = {
+      {"dlfl", &PeerRow::dlfl}, {"CGAL", &PeerRow::cgal}, {"OpenMesh", &PeerRow::openmesh}};
   for (std::size_t first = 0; first + sizes <= rows.size() && sizes > 0; first += sizes) {
     for (const Column& column : columns) {
       if (!(rows[first].*column.member)) continue;

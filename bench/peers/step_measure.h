@@ -28,7 +28,8 @@ StepCost measure_step(F&& step) {
   step();
   const auto end = std::chrono::steady_clock::now();
   getrusage(RUSAGE_SELF, &after);
-  return {std::chrono::duration<double>(end - start).count(), seconds(after.ru_utime) - seconds(before.ru_utime),
+  return {std::chrono::duration<double>(end - start).count(),
+          seconds(after.ru_utime) - seconds(before.ru_utime),
           seconds(after.ru_stime) - seconds(before.ru_stime), after.ru_minflt - before.ru_minflt,
           after.ru_majflt - before.ru_majflt};
 }

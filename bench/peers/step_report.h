@@ -25,7 +25,8 @@ inline std::optional<StepResult> parse_report(const std::string& text) {
   if (at == std::string::npos) return std::nullopt;
   StepResult r;
   if (std::sscanf(text.c_str() + at, "step %zu %zu %lf %lf %lf %ld %ld", &r.input_faces, &r.output_faces,
-                  &r.cost.wall, &r.cost.user, &r.cost.system, &r.cost.minor_faults, &r.cost.major_faults) != 7) {
+                  &r.cost.wall, &r.cost.user, &r.cost.system, &r.cost.minor_faults,
+                  &r.cost.major_faults) != 7) {
     return std::nullopt;
   }
   return r;
