@@ -32,6 +32,18 @@ std::string ratio_cell(const std::optional<ColdResult>& a, const std::optional<C
   return cell;
 }
 
+// The system share of a step's CPU time in percent, "  -" where the library has no such scheme.
+std::string share_cell(const std::optional<ColdResult>& r) {
+  char cell[16];
+  const double cpu = r ? r->step.cost.user + r->step.cost.system : 0;
+  if (cpu > 0) {
+    std::snprintf(cell, sizeof cell, "%3.0f", 100 * r->step.cost.system / cpu);
+  } else {
+    std::snprintf(cell, sizeof cell, "%3s", "-");
+  }
+  return cell;
+}
+
 }  // namespace
 
 void print_detail_header() {
@@ -60,14 +72,16 @@ bool faces_agree(const PeerRow& row) {
 
 void print_summary(const std::vector<PeerRow>& rows) {
   std::printf("\nstep wall seconds (median of cold runs); ratios > 1: dlfl is faster\n");
-  std::printf("%-14s %10s %9s %9s %9s %9s %9s %9s %9s\n", "scheme", "out faces", "dlfl", "dlfl 1T",
-              "2T vs 1T", "CGAL", "OpenMesh", "CGAL/dlfl", "OM/dlfl");
+  std::printf("%-14s %10s %9s %9s %9s %9s %9s %9s %9s  %s\n", "scheme", "out faces", "dlfl", "dlfl 1T",
+              "2T vs 1T", "CGAL", "OpenMesh", "CGAL/dlfl", "OM/dlfl", "sys %: dlfl/CGAL/OM");
   for (const PeerRow& row : rows) {
-    std::printf("%-14s %10zu %s %s %s %s %s %s %s%s\n", scheme_name(row.scheme), row.expected_faces,
+    std::printf("%-14s %10zu %s %s %s %s %s %s %s  %s/%s/%s%s\n", scheme_name(row.scheme), row.expected_faces,
                 seconds_cell(row.dlfl).c_str(), seconds_cell(row.dlfl_one_thread).c_str(),
                 ratio_cell(row.dlfl_one_thread, row.dlfl).c_str(), seconds_cell(row.cgal).c_str(),
                 seconds_cell(row.openmesh).c_str(), ratio_cell(row.cgal, row.dlfl).c_str(),
-                ratio_cell(row.openmesh, row.dlfl).c_str(), faces_agree(row) ? "" : "  FACE COUNT MISMATCH");
+                ratio_cell(row.openmesh, row.dlfl).c_str(), share_cell(row.dlfl).c_str(),
+                share_cell(row.cgal).c_str(), share_cell(row.openmesh).c_str(),
+                faces_agree(row) ? "" : "  FACE COUNT MISMATCH");
   }
 }
 

@@ -25,7 +25,8 @@ void print_detail(const PeerRow& row, const char* label, const std::optional<Col
 /// Whether every library that ran produced the closed-form number of faces.
 bool faces_agree(const PeerRow& row);
 
-/// Per scheme and size: dlfl (default threads and one), CGAL, OpenMesh, the ratios to dlfl.
+/// Per scheme and size: dlfl (default threads and one), CGAL, OpenMesh, the ratios to dlfl, and each
+/// library's system share of the step's CPU time.
 void print_summary(const std::vector<PeerRow>& rows);
 
 /// Per scheme and library: nanoseconds per output face at each size, and the ratio largest / smallest.
