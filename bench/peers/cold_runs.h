@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "peer_schemes.h"
 #include "step_measure.h"
@@ -25,8 +26,15 @@ struct ColdResult {
   double peak_rss_mib = 0;
 };
 
-/// Runs `variant` in `runs` fresh processes of `helper` (the path of dlfl_peer_step). Nothing if the library
-/// has no such scheme; throws std::runtime_error if a run fails.
-std::optional<ColdResult> cold_runs(const std::string& helper, const Variant& variant, int runs);
+/// Runs each of `variants` in `runs` fresh processes of `helper` (the path of dlfl_peer_step), interleaved:
+/// round r runs them all, starting with variant r (mod their number). The order matters on this VM: the step
+/// right after a large process has ended can take several times as long, its extra time all in the kernel
+/// (docs/performance.md), so each variant takes that place in at most one round in every few, and the median
+/// leaves it out. `first_round` numbers the first round, so that successive calls go on turning (with one
+/// run each, every variant still gets its turn at the front). Per variant the median run, or nothing if the
+/// library has no such scheme. Throws std::runtime_error if a run fails.
+std::vector<std::optional<ColdResult>> cold_runs(const std::string& helper,
+                                                 const std::vector<Variant>& variants, int runs,
+                                                 std::size_t first_round = 0);
 
 }  // namespace dlfl::bench
