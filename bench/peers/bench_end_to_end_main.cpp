@@ -3,9 +3,8 @@
 // against cgal_subdivide and openmesh_subdivide (the same step in CGAL 5.5 and OpenMesh, with their own
 // readers and writers), for a binary PLY and an OBJ input of the same torus grid of quads. Prints each
 // process's wall time (median of the runs; the programs take turns) and peak resident memory (wait4's
-// ru_maxrss), and checks that
-// every output file holds the closed-form number of faces (exit 1 if not). The files go to
-// $TMPDIR/dlfl_bench_end_to_end (or /tmp), removed at the end.
+// ru_maxrss), and checks that every output file holds the closed-form number of faces (exit 1 if not). The
+// files go to $TMPDIR/dlfl_bench_end_to_end (or /tmp), removed at the end.
 
 #include <algorithm>
 #include <cstdio>
