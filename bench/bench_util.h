@@ -44,6 +44,16 @@ inline double steal_seconds() {
   return n == 8 ? double(v[7]) / 100.0 : 0;  // USER_HZ ticks
 }
 
+/// /proc/loadavg's line ("1.02 0.87 0.75 2/345 6789\n"): how busy the shared machine is; empty if unknown.
+inline std::string load_average() {
+  char line[128] = {};
+  FILE* f = std::fopen("/proc/loadavg", "r");
+  if (!f) return {};
+  const bool read = std::fgets(line, sizeof line, f) != nullptr;
+  std::fclose(f);
+  return read ? line : "";
+}
+
 /// Peak resident set size of this process so far, in MiB.
 inline double peak_rss_mib() {
   rusage u{};

@@ -69,23 +69,25 @@ Mesh MeshAssembler::finish() {
   // numbering whatever the threads.
   const std::size_t chunks = detail::chunk_count(nc);
   std::vector<std::uint32_t> first_edge(chunks + 1, 0);
+  const auto pairs_back = [&](std::size_t k) {
+    const std::uint32_t t = twin_[k];
+    return t < nc && twin_[t] == k && t != k;
+  };
   std::atomic<bool> unpaired = false;
   detail::parallel_chunks(nc, detail::parallel_grain, [&](std::size_t begin, std::size_t end) {
     std::uint32_t count = 0;
     for (std::size_t k = begin; k < end; ++k) {
-      const std::uint32_t t = twin_[k];
-      if (t >= nc || twin_[t] != k || t == k) {
+      if (!pairs_back(k)) {
         unpaired = true;
         return;
       }
-      count += t > k;
+      count += twin_[k] > k;
     }
     first_edge[begin / detail::parallel_grain + 1] = count;
   });
   if (unpaired) {  // the first such corner, found serially so that the message does not depend on threads
     for (std::uint32_t k = 0; k < nc; ++k) {
-      const std::uint32_t t = twin_[k];
-      if (t >= nc || twin_[t] != k || t == k) {
+      if (!pairs_back(k)) {
         throw InvalidArgument("MeshAssembler: the twin of corner " + std::to_string(k) +
                               " does not pair back");
       }

@@ -43,10 +43,10 @@ class ChangeRecord {
  public:
   ChangeRecord() = default;
 
-  bool empty() const { return inverses_.empty(); }
-  std::size_t size() const { return inverses_.size(); }
-  /// The inverses, oldest change first.
-  std::span<const Change> inverses() const { return inverses_; }
+  bool empty() const { return slots_.empty(); }
+  std::size_t size() const { return slots_.size(); }
+  /// The i-th inverse (i < size()), oldest change first.
+  Change inverse(std::size_t i) const;
 
   /// Undoes the recorded changes on `mesh` (which must be the mesh they were made on, as they left it), and
   /// becomes the record of that undo: reverting again redoes them.
@@ -57,7 +57,20 @@ class ChangeRecord {
 
  private:
   friend class Transaction;
-  std::vector<Change> inverses_;
+  // One inverse. The two that make up nearly every record of a large operation, the delete_vertex of a
+  // create_vertex and the delete_edge of an insert_edge, are kept in these 16 bytes (sizeof(Change) is
+  // 112): the record would otherwise take more memory than the mesh it was made on. Any other change goes
+  // to `others_` whole, the slot holding its index there.
+  struct Slot {
+    std::uint32_t tag;
+    std::uint32_t a, b, c;
+  };
+  void push(const Step& step);
+  void push(Change&& change);
+  void reserve(std::size_t changes);
+
+  std::vector<Slot> slots_;
+  std::vector<Change> others_;
 };
 
 /// Changes a mesh through the Euler operators and records their inverses. Each function has the contract of
@@ -98,6 +111,12 @@ class Transaction {
   void set_attribute(ElementKind kind, std::string_view name, std::uint32_t index,
                      const AttributeValue& value);
 
+  /// Makes room for `changes` more recorded changes, and for the mesh to grow to the given capacities (as
+  /// `Mesh::reserve`), so that an operation that knows its size fills presized arrays instead of growing
+  /// them (copying them, and faulting in fresh memory) over and over. Changes nothing observable.
+  void reserve(std::size_t changes, std::size_t vertices, std::size_t edges, std::size_t faces,
+               std::size_t corners);
+
   /// Number of changes recorded so far.
   std::size_t size() const { return record_.size(); }
 
@@ -110,7 +129,7 @@ class Transaction {
   // Records the inverse an operator returned with its result.
   template <class Result>
   Result recorded(Result result) {
-    record_.inverses_.push_back(result.inverse);
+    record_.push(result.inverse);
     return result;
   }
 

@@ -69,11 +69,38 @@ std::vector<glm::dvec3> inset_corners(const Mesh& m, const std::vector<CornerId>
   return out;
 }
 
+// Room for everything wireframe adds, so that the mesh's arrays and the record are filled once rather than
+// grown (each growth copies them and faults in fresh memory). With S the sides of the surface faces and H
+// those of the hole faces: the rings add S vertices, 2S edges, 2S faces (S point spheres merged away, S
+// splits) and 4S corners in 3S steps; the copy of the V1 = V + S vertices and E1 = E + 2S edges adds at
+// most V1 vertices, E1 edges, V1 + E1 faces and V1 + 2 E1 corners in V1 + E1 steps and a set_hole per hole
+// face; each tube of n sides adds n edges, at most n faces and 2n corners in n steps.
+void reserve_room(Transaction& tx) {
+  const Mesh& m = tx.mesh();
+  std::size_t sides = 0, hole_sides = 0, holes = 0;
+  for (FaceId f : m.faces()) {
+    if (m.size(f) < 2) continue;
+    if (m.is_hole(f)) {
+      hole_sides += m.size(f);
+      ++holes;
+    } else {
+      sides += m.size(f);
+    }
+  }
+  const std::size_t v1 = m.num_vertices() + sides, e1 = m.num_edges() + 2 * sides;
+  const std::size_t tube_sides = sides + hole_sides;
+  tx.reserve(3 * sides + v1 + e1 + holes + tube_sides, m.vertex_capacity() + sides + v1,
+             m.edge_capacity() + 2 * sides + e1 + tube_sides,
+             m.face_capacity() + 2 * sides + v1 + e1 + tube_sides,
+             m.corner_capacity() + 4 * sides + v1 + 2 * e1 + 2 * tube_sides);
+}
+
 }  // namespace
 
 std::vector<VertexId> wireframe(Transaction& tx, const WireframeOptions& options) {
   const Mesh& m = tx.mesh();
   check(m, options);
+  reserve_room(tx);
   std::vector<FaceId> surface;
   for (FaceId f : m.faces()) {
     if (!m.is_hole(f) && m.size(f) >= 2) surface.push_back(f);

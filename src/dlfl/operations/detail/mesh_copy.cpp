@@ -36,9 +36,9 @@ MeshCopy add_mesh_copy(Transaction& tx, const Mesh& source) {
     const EdgeId e = scratch.edge(c);
     return e.valid() ? corner_at(target, copy.edges[e.index()], v) : target.corner(v);
   };
-  const auto inverses = teardown.inverses();
-  for (auto change = inverses.rbegin(); change != inverses.rend(); ++change) {
-    const Step& step = std::get<Step>(*change);
+  for (std::size_t i = teardown.size(); i-- > 0;) {
+    const Change change = teardown.inverse(i);
+    const Step& step = std::get<Step>(change);
     if (step.kind == Step::Kind::create_vertex) {
       const VertexId made = tx.create_vertex(step.position);
       copy.vertices[scratch.apply(step).vertex.index()] = made;
