@@ -310,6 +310,7 @@ std::size_t fast_vertices(const Element& e, const unsigned char*& p, std::size_t
     return 0;
   const std::size_t stride = 3 * size_of(type);
   const std::size_t count = std::min(e.count, left / stride);
+  if (count == 0) return 0;  // and an empty vector may have no data pointer, which memcpy must not get
   std::vector<glm::dvec3>& positions = parsed.soup.positions;
   const std::size_t first = positions.size();
   positions.resize(first + count);

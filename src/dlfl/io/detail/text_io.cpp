@@ -52,6 +52,7 @@ std::string read_all(std::istream& in, const std::string& name, std::size_t size
 }
 
 void BlockWriter::text(std::string_view s) {
+  if (s.empty()) return;  // an empty view may have no data pointer, which memcpy must not get
   // A large piece goes to the stream as it is, rather than through the buffer.
   const bool large = s.size() >= capacity / 4;
   if (large || s.size() > capacity - size_) {
