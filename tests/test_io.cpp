@@ -25,6 +25,7 @@
 #include <dlfl/io/off.h>
 #include <dlfl/io/ply.h>
 #include <dlfl/mesh.h>
+#include "little_endian_bytes.h"
 #include "test_helpers.h"
 
 namespace fs = std::filesystem;
@@ -174,15 +175,7 @@ struct Bytes {
   std::string data;
   template <class T>
   Bytes& put(T value) {
-    std::uint64_t bits = 0;
-    if constexpr (std::is_same_v<T, float>) {
-      bits = std::bit_cast<std::uint32_t>(value);
-    } else if constexpr (std::is_same_v<T, double>) {
-      bits = std::bit_cast<std::uint64_t>(value);
-    } else {
-      bits = static_cast<std::make_unsigned_t<T>>(value);
-    }
-    for (std::size_t i = 0; i < sizeof(T); ++i) data.push_back(static_cast<char>((bits >> (8 * i)) & 0xFF));
+    put_little_endian(data, value);
     return *this;
   }
 };

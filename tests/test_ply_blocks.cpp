@@ -14,6 +14,7 @@
 
 #include <dlfl/errors.h>
 #include <dlfl/io/detail/text_io.h>
+#include "little_endian_bytes.h"
 
 using namespace dlfl;
 
@@ -22,15 +23,7 @@ namespace {
 // Little-endian bytes, independent of the host's byte order.
 template <class T>
 void put(std::string& data, T value) {
-  std::uint64_t bits = 0;
-  if constexpr (std::is_same_v<T, float>) {
-    bits = std::bit_cast<std::uint32_t>(value);
-  } else if constexpr (std::is_same_v<T, double>) {
-    bits = std::bit_cast<std::uint64_t>(value);
-  } else {
-    bits = static_cast<std::make_unsigned_t<T>>(value);
-  }
-  for (std::size_t i = 0; i < sizeof(T); ++i) data.push_back(static_cast<char>((bits >> (8 * i)) & 0xFF));
+  put_little_endian(data, value);
 }
 
 // A strip of `n` quads over 2n + 2 vertices, vertex i at (i, i / 2, -i / 3) (the /3 not exact in binary).

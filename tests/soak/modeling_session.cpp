@@ -108,8 +108,12 @@ class Session {
         if (!p.keywords.empty()) return p.keywords[pick(static_cast<std::uint32_t>(p.keywords.size()))];
         if (p.name == "scheme") return schemes_[pick(static_cast<std::uint32_t>(schemes_.size()))];
         return std::string(chance(0.5) ? "weight" : "tag");
-      case ParamType::point:
-        return glm::dvec3(2 * unit() - 1, 2 * unit() - 1, 2 * unit() - 1);
+      case ParamType::point: {
+        // Drawn in braces, which evaluate left to right: the arguments of a call have no fixed order, and
+        // gcc and clang would draw different sessions from one seed.
+        const double x[] = {2 * unit() - 1, 2 * unit() - 1, 2 * unit() - 1};
+        return glm::dvec3(x[0], x[1], x[2]);
+      }
       case ParamType::vertex:
       case ParamType::edge:
       case ParamType::face:

@@ -277,33 +277,20 @@ T big_endian(T value) {
   return with_byte_order<std::endian::big>(value);
 }
 
-/// Collects output in a large buffer and hands it to the stream in big blocks; numbers are formatted with
-/// std::to_chars (shortest round-trip for doubles). Call `flush()` at the end; stream errors are left in the
-/// stream's state for the caller to check.
-class BlockWriter {
+/// The number and line formats that every text writer shares (numbers by std::to_chars, shortest round-trip
+/// for doubles), written through the writer's `room(n)` (space for n more characters, returned as a pointer)
+/// and `advance_to(end)` (the text now ends at `end`), which it lets this base call.
+template <class Writer>
+class TextFormat {
  public:
-  explicit BlockWriter(std::ostream& out) : out_(out), buffer_(new char[capacity]) {}
-  BlockWriter(const BlockWriter&) = delete;
-  BlockWriter& operator=(const BlockWriter&) = delete;
-
-  void text(std::string_view s);
   void put(char c) {
-    if (size_ == capacity) flush();
-    buffer_[size_++] = c;
+    *self().room(1) = c;
+    self().advance_by_one();
   }
-  void number(double value) {
-    char* p = room(32);  // the longest shortest-form double is 24 characters
-    size_ = static_cast<std::size_t>(std::to_chars(p, p + 32, value).ptr - buffer_.get());
-  }
+  void number(double value) { format(value, 32); }  // the longest shortest-form double is 24 characters
   /// A float in its shortest round-trip form (STL text, which so holds the values that binary STL holds).
-  void number(float value) {
-    char* p = room(24);  // the longest shortest-form float is 15 characters
-    size_ = static_cast<std::size_t>(std::to_chars(p, p + 24, value).ptr - buffer_.get());
-  }
-  void number(std::uint64_t value) {
-    char* p = room(24);
-    size_ = static_cast<std::size_t>(std::to_chars(p, p + 24, value).ptr - buffer_.get());
-  }
+  void number(float value) { format(value, 24); }  // the longest shortest-form float is 15 characters
+  void number(std::uint64_t value) { format(value, 24); }
   /// "x y z\n", shortest round-trip decimals.
   void point_line(const glm::dvec3& p) {
     number(p.x);
@@ -322,6 +309,26 @@ class BlockWriter {
     }
     put('\n');
   }
+
+ private:
+  Writer& self() { return static_cast<Writer&>(*this); }
+  template <class T>
+  void format(T value, std::size_t most) {
+    char* p = self().room(most);
+    self().advance_to(std::to_chars(p, p + most, value).ptr);
+  }
+};
+
+/// Collects output in a large buffer and hands it to the stream in big blocks; numbers are formatted with
+/// std::to_chars (shortest round-trip for doubles). Call `flush()` at the end; stream errors are left in the
+/// stream's state for the caller to check.
+class BlockWriter : public TextFormat<BlockWriter> {
+ public:
+  explicit BlockWriter(std::ostream& out) : out_(out), buffer_(new char[capacity]) {}
+  BlockWriter(const BlockWriter&) = delete;
+  BlockWriter& operator=(const BlockWriter&) = delete;
+
+  void text(std::string_view s);
   /// The bytes of `value` in little-endian order.
   template <class T>
   void binary(T value) {
@@ -342,11 +349,14 @@ class BlockWriter {
   void flush();
 
  private:
+  friend class TextFormat<BlockWriter>;
   static constexpr std::size_t capacity = std::size_t{1} << 20;
   char* room(std::size_t n) {
     if (capacity - size_ < n) flush();
     return buffer_.get() + size_;
   }
+  void advance_to(const char* end) { size_ = static_cast<std::size_t>(end - buffer_.get()); }
+  void advance_by_one() { ++size_; }
 
   std::ostream& out_;
   std::unique_ptr<char[]> buffer_;

@@ -19,41 +19,24 @@ namespace dlfl::io_detail {
 
 /// Formats a part of a file into memory with BlockWriter's calls (numbers by std::to_chars, the same
 /// characters). Its storage only grows, so that one writer serves many parts without new memory.
-class TextWriter {
+class TextWriter : public TextFormat<TextWriter> {
  public:
   void text(std::string_view s) {
+    if (s.empty()) return;  // an empty view may have no data pointer, which memcpy must not get
     std::memcpy(room(s.size()), s.data(), s.size());
     size_ += s.size();
-  }
-  void put(char c) {
-    *room(1) = c;
-    ++size_;
-  }
-  void number(double value) {
-    char* p = room(32);
-    size_ = static_cast<std::size_t>(std::to_chars(p, p + 32, value).ptr - text_.data());
-  }
-  void number(std::uint64_t value) {
-    char* p = room(24);
-    size_ = static_cast<std::size_t>(std::to_chars(p, p + 24, value).ptr - text_.data());
-  }
-  /// "x y z\n", shortest round-trip decimals.
-  void point_line(const glm::dvec3& p) {
-    number(p.x);
-    put(' ');
-    number(p.y);
-    put(' ');
-    number(p.z);
-    put('\n');
   }
   std::string_view view() const { return {text_.data(), size_}; }
   void clear() { size_ = 0; }
 
  private:
+  friend class TextFormat<TextWriter>;
   char* room(std::size_t n) {
     if (text_.size() - size_ < n) text_.resize(std::max(2 * text_.size(), size_ + n + 4096));
     return text_.data() + size_;
   }
+  void advance_to(const char* end) { size_ = static_cast<std::size_t>(end - text_.data()); }
+  void advance_by_one() { ++size_; }
   std::string text_;
   std::size_t size_ = 0;
 };
